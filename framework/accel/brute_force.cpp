@@ -1,0 +1,35 @@
+#include "framework/accel/brute_force.h"
+
+#include "framework/accel/traversal.h"
+
+namespace rtlab {
+
+Hit BruteForce::intersect(const Ray& ray, TraversalStats& stats) const {
+    Traversal traversal(*primitives_, ray, stats);
+    Hit hit;
+    hit.t = ray.tMax;
+    for (uint32_t prim = 0; prim < primitives_->size(); ++prim) traversal.intersect(prim, hit);
+    if (!hit.found()) hit.t = kInfinity;
+    return hit;
+}
+
+bool BruteForce::occluded(const Ray& ray, TraversalStats& stats) const {
+    Traversal traversal(*primitives_, ray, stats);
+    for (uint32_t prim = 0; prim < primitives_->size(); ++prim)
+        if (traversal.occludes(prim)) return true;
+    return false;
+}
+
+StructureView BruteForce::structure() const {
+    StructureView view;
+    StructureNode leaf;
+    for (uint32_t prim = 0; prim < primitives_->size(); ++prim) {
+        leaf.bounds.extend(primitives_->bounds(prim));
+        view.primIndices.push_back(prim);
+    }
+    leaf.primCount = primitives_->size();
+    view.nodes.push_back(leaf);
+    return view;
+}
+
+}  // namespace rtlab

@@ -1,0 +1,58 @@
+#include "framework/accel/bvh_accelerator.h"
+
+#include "framework/accel/traversal.h"
+#include "framework/interface/a1_bvh.h"
+
+namespace rtlab {
+
+void BvhAccelerator::build(const PrimitiveSet& primitives) {
+    primitives_ = &primitives;
+    std::vector<BuildPrimitive> prims(primitives.size());
+    for (uint32_t i = 0; i < primitives.size(); ++i)
+        prims[i] = BuildPrimitive{primitives.bounds(i), primitives.centroid(i), i};
+    bvh_ = prims.empty() ? Bvh{} : buildBvh(std::move(prims), options_);
+}
+
+Hit BvhAccelerator::intersect(const Ray& ray, TraversalStats& stats) const {
+    Hit hit;
+    hit.t = ray.tMax;
+    if (!bvh_.nodes.empty()) {
+        Traversal traversal(*primitives_, ray, stats);
+        if (recursiveTraversal_)
+            intersectBvhRecursive(bvh_, traversal, hit);
+        else
+            intersectBvh(bvh_, traversal, hit);
+    }
+    if (!hit.found()) hit.t = kInfinity;
+    return hit;
+}
+
+bool BvhAccelerator::occluded(const Ray& ray, TraversalStats& stats) const {
+    if (bvh_.nodes.empty()) return false;
+    Traversal traversal(*primitives_, ray, stats);
+    return occludedBvh(bvh_, traversal);
+}
+
+StructureView BvhAccelerator::structure() const {
+    StructureView view;
+    view.primIndices = bvh_.primIndices;
+    view.nodes.reserve(bvh_.nodes.size());
+    for (uint32_t i = 0; i < bvh_.nodes.size(); ++i) {
+        const BvhNode& node = bvh_.nodes[i];
+        StructureNode out;
+        out.bounds = node.bounds;
+        if (node.isLeaf()) {
+            out.firstPrim = node.offset;
+            out.primCount = node.primCount;
+        } else {
+            out.firstChild = static_cast<uint32_t>(view.children.size());
+            out.childCount = 2;
+            view.children.push_back(i + 1);
+            view.children.push_back(node.offset);
+        }
+        view.nodes.push_back(out);
+    }
+    return view;
+}
+
+}  // namespace rtlab

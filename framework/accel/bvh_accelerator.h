@@ -1,0 +1,30 @@
+// Wraps the BVH of assignments a1/a2 in the Accelerator interface: building runs buildBvh
+// with the chosen split method, queries run the ordered (or, on request, the recursive)
+// traversal.
+#pragma once
+
+#include "framework/accel/accelerator.h"
+#include "framework/interface/bvh.h"
+
+namespace rtlab {
+
+class BvhAccelerator final : public Accelerator {
+public:
+    BvhAccelerator(const BvhOptions& options, bool recursiveTraversal)
+        : options_(options), recursiveTraversal_(recursiveTraversal) {}
+
+    void build(const PrimitiveSet& primitives) override;
+    Hit intersect(const Ray& ray, TraversalStats& stats) const override;
+    bool occluded(const Ray& ray, TraversalStats& stats) const override;
+    StructureView structure() const override;
+
+    const Bvh& bvh() const { return bvh_; }
+
+private:
+    BvhOptions options_;
+    bool recursiveTraversal_;
+    const PrimitiveSet* primitives_ = nullptr;
+    Bvh bvh_;
+};
+
+}  // namespace rtlab

@@ -1,0 +1,34 @@
+// The primitives an accelerator is built over, addressed by index: bounds and centroid for
+// building, intersection for traversal. Triangle vertices are gathered contiguously so a leaf
+// reads one cache line per triangle instead of chasing indices.
+#pragma once
+
+#include "framework/core/bounds.h"
+#include "framework/core/hit.h"
+#include "framework/core/ray.h"
+#include "framework/scene/scene.h"
+
+#include <array>
+#include <vector>
+
+namespace rtlab {
+
+class PrimitiveSet {
+public:
+    explicit PrimitiveSet(const Scene& scene);
+
+    uint32_t size() const { return static_cast<uint32_t>(bounds_.size()); }
+    const Bounds3f& bounds(uint32_t prim) const { return bounds_[prim]; }
+    Vec3 centroid(uint32_t prim) const { return bounds_[prim].centre(); }
+
+    // Closest-hit step: tests primitive prim against (ray.tMin, hit.t]; on a hit, overwrites
+    // hit and returns true.
+    bool intersect(uint32_t prim, const Ray& ray, Hit& hit) const;
+
+private:
+    std::vector<std::array<Vec3, 3>> triangles_;
+    std::vector<Sphere> spheres_;
+    std::vector<Bounds3f> bounds_;
+};
+
+}  // namespace rtlab
