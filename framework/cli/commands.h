@@ -10,6 +10,10 @@ void addRenderCommand(CLI::App& app);
 void addHitsCommand(CLI::App& app);
 void addSceneCommand(CLI::App& app);
 void addGradeCommand(CLI::App& app);
+void addExportPovCommand(CLI::App& app);
+void addRefsCommand(CLI::App& app);
+void addCompareCommand(CLI::App& app);
+void addBenchCommand(CLI::App& app);
 
 // Runs rtlab with the given arguments; returns the process exit code.
 int run(int argc, char** argv);

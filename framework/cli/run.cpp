@@ -14,6 +14,10 @@ int run(int argc, char** argv) {
     addHitsCommand(app);
     addSceneCommand(app);
     addGradeCommand(app);
+    addExportPovCommand(app);
+    addRefsCommand(app);
+    addCompareCommand(app);
+    addBenchCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -1,0 +1,5 @@
+// PLACEHOLDER: replaced by the real command.
+#include "framework/cli/commands.h"
+namespace rtlab::cli {
+void addCompareCommand(CLI::App& app) { (void)app; }
+}  // namespace rtlab::cli
