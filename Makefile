@@ -1,0 +1,44 @@
+# rtlab: the two commands of the quick start are `make grade` and `make test`. Every target
+# installs what is missing first (scripts/install-deps, Debian packages) and builds.
+#
+#   make grade [IMPL=assignments|solutions]   grade the student tree (or the reference)
+#   make test                                 the whole test suite through ctest
+#   make test-sanitize                        the suite under AddressSanitizer + UBSan
+#   make bench                                benchmarks against Embree (docs/performance.md)
+#   make gradescope                           the Gradescope autograder zip
+
+IMPL ?= assignments
+JOBS ?= $(shell nproc)
+RTLAB := build/$(if $(filter solutions,$(IMPL)),rtlab-solution,rtlab)
+
+.PHONY: deps build models grade test test-sanitize bench gradescope clean
+
+deps:
+	@scripts/install-deps
+
+build: deps
+	@cmake --preset release > build-configure.log || (cat build-configure.log; exit 1)
+	@cmake --build --preset release -j $(JOBS)
+
+models: build
+	@scripts/fetch-models build/models
+
+grade: build models
+	@$(RTLAB) grade
+
+test: build models
+	@ctest --preset release -j $(JOBS)
+
+test-sanitize: deps models
+	@cmake --preset sanitize > build-configure-sanitize.log || (cat build-configure-sanitize.log; exit 1)
+	@cmake --build --preset sanitize -j $(JOBS)
+	@ctest --preset sanitize -j $(JOBS) -L sanitize
+
+bench: build models
+	@build/rtlab-solution bench --out build/bench
+
+gradescope: build
+	@scripts/make-gradescope build/gradescope.zip
+
+clean:
+	rm -rf build build-debug build-sanitize build-configure*.log
