@@ -32,6 +32,7 @@ struct AcceleratorSpec {
     std::string name = "bvh-buckets";
     int maxLeaf = 4;
     bool recursiveTraversal = false;  // the lecture's recursive BVH traversal instead of ordered
+    bool sahAllAxes = false;          // bvh-sah, bvh-buckets: try x, y and z, not only the longest axis
 };
 
 // Throws rtlab::Error with the list of valid names when spec.name is unknown.

@@ -18,6 +18,7 @@ std::unique_ptr<Accelerator> makeAccelerator(const AcceleratorSpec& spec) {
 
     BvhOptions options;
     options.maxLeaf = spec.maxLeaf;
+    options.allAxes = spec.sahAllAxes;
     std::string name = spec.name;
     if (name.starts_with("bvh-buckets:")) {
         std::string count = name.substr(12);

@@ -1,5 +1,102 @@
-// PLACEHOLDER: replaced by the real command.
+// rtlab compare A B [--diff heat.png] [--threshold CODES] [--max-mean CODES] [--max-max CODES]
+// [--max-share FRACTION]: two images through OpenImageIO (framework/render/image_compare.h).
+// Errors are printed in image units and in 16-bit codes; the exit status is 1 when a
+// tolerance given on the command line is exceeded.
 #include "framework/cli/commands.h"
+#include "framework/core/error.h"
+#include "framework/render/image_compare.h"
+
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+
 namespace rtlab::cli {
-void addCompareCommand(CLI::App& app) { (void)app; }
+namespace {
+
+struct CompareOptions {
+    std::string imageA;
+    std::string imageB;
+    std::string heatMapPath;
+    double thresholdCodes = 2.0;
+    std::optional<double> maxMeanCodes;
+    std::optional<double> maxMaxCodes;
+    std::optional<double> maxShare;
+};
+
+std::string percent(uint64_t count, uint64_t total) {
+    std::ostringstream out;
+    out << std::fixed << std::setprecision(3) << (total ? 100.0 * count / total : 0.0) << " %";
+    return out.str();
+}
+
+void printComparison(const CompareOptions& options, const ImageComparison& c) {
+    std::ostream& out = std::cout;
+    out << "compare " << options.imageA << " vs " << options.imageB << ": " << c.width << "x" << c.height
+        << ", " << c.channels << " channels\n";
+    out << std::setprecision(4);
+    out << "  mean abs error  " << c.meanError << "  (" << c.meanCodes() << " codes)\n";
+    out << "  max abs error   " << c.maxError << "  (" << c.maxCodes() << " codes) at pixel (" << c.maxX << ", "
+        << c.maxY << ")\n";
+    out << "  RMSE            " << c.rmse << "\n";
+    out << "  PSNR            " << c.psnr << " dB\n";
+    out << "  median pixel    " << c.medianPixelCodes << " codes\n";
+    const auto& n = c.pixelsByCodes;
+    out << "  pixels by error 0: " << n[0] << " (" << percent(n[0], c.pixelCount) << "), 1: " << n[1] << ", 2: "
+        << n[2] << ", >2: " << n[3] << "  (codes; " << percent(n[0] + n[1] + n[2], c.pixelCount)
+        << " within 2)\n";
+    out << "  over threshold  " << c.pixelsOverThreshold << " of " << c.pixelCount << " pixels ("
+        << percent(c.pixelsOverThreshold, c.pixelCount) << ") above " << c.thresholdCodes << " codes\n";
+}
+
+void compare(const CompareOptions& options) {
+    ImageComparison comparison = compareImages(options.imageA, options.imageB, options.thresholdCodes);
+    printComparison(options, comparison);
+    if (!options.heatMapPath.empty()) {
+        writeErrorHeatMap(options.imageA, options.imageB, options.heatMapPath);
+        std::cout << "  heat map        " << options.heatMapPath << " (" << errorHeatMapLegend() << ")\n";
+    }
+    std::vector<std::string> exceeded;
+    auto check = [&exceeded](const std::optional<double>& limit, double value, const std::string& what) {
+        if (limit && !(value <= *limit)) {
+            std::ostringstream text;
+            text << what << " " << value << " > " << *limit;
+            exceeded.push_back(text.str());
+        }
+    };
+    check(options.maxMeanCodes, comparison.meanCodes(), "mean error (codes)");
+    check(options.maxMaxCodes, comparison.maxCodes(), "max error (codes)");
+    check(options.maxShare, comparison.shareOverThreshold(), "share of pixels over the threshold");
+    if (exceeded.empty()) return;
+    std::string message = "compare: tolerance exceeded: ";
+    for (size_t i = 0; i < exceeded.size(); ++i) message += (i ? "; " : "") + exceeded[i];
+    throw Error(message);
+}
+
+}  // namespace
+
+void addCompareCommand(CLI::App& app) {
+    auto options = std::make_shared<CompareOptions>();
+    CLI::App* command = app.add_subcommand(
+        "compare", "Compare two images (any format OpenImageIO reads): errors, PSNR, heat map (docs/verification.md)");
+    command->add_option("a", options->imageA, "First image (e.g. the render)")->required()->check(CLI::ExistingFile);
+    command->add_option("b", options->imageB, "Second image (e.g. the POV-Ray reference)")
+        ->required()
+        ->check(CLI::ExistingFile);
+    command->add_option("--diff", options->heatMapPath, "Write an 8-bit PNG heat map of the per-pixel error");
+    command->add_option("--threshold", options->thresholdCodes,
+                        "A pixel is 'over' when a channel differs by more than this many 16-bit codes")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
+    command->add_option("--max-mean", options->maxMeanCodes, "Fail when the mean error exceeds this (16-bit codes)")
+        ->check(CLI::NonNegativeNumber);
+    command->add_option("--max-max", options->maxMaxCodes, "Fail when the max error exceeds this (16-bit codes)")
+        ->check(CLI::NonNegativeNumber);
+    command->add_option("--max-share", options->maxShare,
+                        "Fail when the share of pixels over the threshold exceeds this fraction (0.001 = 0.1 %)")
+        ->check(CLI::Range(0.0, 1.0));
+    command->callback([options] { compare(*options); });
+}
+
 }  // namespace rtlab::cli

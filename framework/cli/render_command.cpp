@@ -1,5 +1,149 @@
-// PLACEHOLDER: replaced by the real command.
+// rtlab render SCENE -o OUT: renders a glTF scene with the chosen accelerator
+// (docs/rendering.md) and prints one summary line: time, throughput, work per ray.
+#include "framework/accel/accelerator.h"
 #include "framework/cli/commands.h"
+#include "framework/core/error.h"
+#include "framework/render/image_io.h"
+#include "framework/render/renderer.h"
+#include "framework/render/tiles.h"
+#include "framework/scene/gltf_loader.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
 namespace rtlab::cli {
-void addRenderCommand(CLI::App& app) { app.add_subcommand("render", "(not built yet)"); }
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kDefaultWidth = 640;
+constexpr double kDefaultAspect = 4.0 / 3.0;  // when the camera does not give one
+
+struct RenderOptions {
+    std::string scenePath;
+    std::string outputPath;
+    int width = 0;   // 0 = derived
+    int height = 0;  // 0 = derived
+    std::string cameraName;
+    AcceleratorSpec accelerator;
+    std::string traversal = "ordered";
+    int threads = 0;
+    bool srgb8 = false;
+    float exposure = 0.0f;
+    std::vector<std::string> aovNames;
+    std::string aovDir;
+};
+
+// A missing side follows from the other and the camera's aspect ratio.
+void resolveImageSize(RenderOptions& options, const Camera& camera) {
+    double aspect = camera.aspectRatio > 0.0 ? camera.aspectRatio : kDefaultAspect;
+    if (options.width == 0 && options.height == 0) options.width = kDefaultWidth;
+    if (options.width == 0) options.width = std::max(1, static_cast<int>(std::lround(options.height * aspect)));
+    if (options.height == 0) options.height = std::max(1, static_cast<int>(std::lround(options.width / aspect)));
+}
+
+// OUT.png with AOV "depth" becomes AOVDIR/OUT.depth.png.
+std::string aovPath(const RenderOptions& options, Aov aov) {
+    fs::path output(options.outputPath);
+    fs::path dir = options.aovDir.empty() ? output.parent_path() : fs::path(options.aovDir);
+    return (dir / (output.stem().string() + "." + aovName(aov) + output.extension().string())).string();
+}
+
+void refuseToOverwriteScene(const std::string& path, const std::string& scenePath) {
+    std::error_code ignored;
+    if (fs::equivalent(path, scenePath, ignored))
+        throw Error(path + ": refusing to overwrite the input scene");
+}
+
+void render(RenderOptions options) {
+    std::vector<Aov> aovs;
+    for (const std::string& name : options.aovNames) aovs.push_back(parseAov(name));
+    ImageWriteOptions writeOptions{options.srgb8, options.exposure};
+    // Fail on bad outputs before the work, not after it.
+    checkImageOutput(options.outputPath, writeOptions);
+    refuseToOverwriteScene(options.outputPath, options.scenePath);
+    for (Aov aov : aovs) {
+        checkImageOutput(aovPath(options, aov));
+        refuseToOverwriteScene(aovPath(options, aov), options.scenePath);
+    }
+    options.accelerator.recursiveTraversal = options.traversal == "recursive";
+    auto accelerator = makeAccelerator(options.accelerator);
+
+    Scene scene = loadGltf(options.scenePath);
+    const Camera& camera = scene.camera(options.cameraName);
+    resolveImageSize(options, camera);
+
+    auto buildStart = std::chrono::steady_clock::now();
+    PrimitiveSet primitives(scene);
+    accelerator->build(primitives);
+    double buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - buildStart).count();
+
+    RenderSettings settings;
+    settings.width = options.width;
+    settings.height = options.height;
+    settings.threads = options.threads;
+    settings.aovs = aovs;
+    RenderResult result = Renderer(scene, camera, *accelerator).render(settings);
+
+    writeImage(options.outputPath, result.colour, writeOptions);
+    std::string extension = fs::path(options.outputPath).extension().string();
+    bool integerFiles = !(extension == ".exr" || extension == ".EXR");
+    for (Aov aov : aovs)
+        writeImage(aovPath(options, aov), aovImage(aov, result.aovs, options.width, options.height, integerFiles));
+
+    TraversalStats total = result.primary;
+    total += result.shadow;
+    double rays = static_cast<double>(std::max<uint64_t>(total.rays, 1));
+    std::printf("rendered %dx%d with %s on %d threads in %.3f s (build %.3f s): %.2f Mrays/s, "
+                "%llu camera + %llu shadow rays, per ray %.1f node visits and %.1f primitive tests",
+                options.width, options.height, options.accelerator.name.c_str(),
+                resolveThreadCount(options.threads), result.seconds, buildSeconds,
+                total.rays / std::max(result.seconds, 1e-9) / 1e6,
+                static_cast<unsigned long long>(result.primary.rays),
+                static_cast<unsigned long long>(result.shadow.rays), total.nodeVisits / rays,
+                total.primitiveTests / rays);
+    if (!result.aovs.cost.empty()) std::printf("; cost AOV max %u", maxCost(result.aovs));
+    std::printf("\n");
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app) {
+    auto options = std::make_shared<RenderOptions>();
+    CLI::App* command = app.add_subcommand("render", "Render a glTF scene to EXR or PNG (docs/rendering.md)");
+    command->add_option("scene", options->scenePath, "glTF 2.0 scene (.gltf or .glb)")
+        ->required()
+        ->check(CLI::ExistingFile);
+    command->add_option("-o,--output", options->outputPath,
+                        "Image to write: .exr (linear float32) or .png (16-bit linear; 8-bit sRGB with --srgb8)")
+        ->required();
+    command->add_option("--width", options->width, "Image width in pixels (default 640, or from --height and the camera's aspect)")
+        ->check(CLI::Range(1, 1 << 15));
+    command->add_option("--height", options->height, "Image height in pixels (default from the width and the camera's aspect, else 4:3)")
+        ->check(CLI::Range(1, 1 << 15));
+    command->add_option("--camera", options->cameraName, "Camera by name (default: the first)");
+    command->add_option("--accel", options->accelerator.name,
+                        "Accelerator: brute, bvh-median, bvh-middle, bvh-equal, bvh-sah, bvh-buckets[:B]")
+        ->capture_default_str();
+    command->add_option("--max-leaf", options->accelerator.maxLeaf, "Largest leaf a BVH may keep unsplit")
+        ->capture_default_str();
+    command->add_option("--traversal", options->traversal, "BVH traversal order")
+        ->check(CLI::IsMember({"ordered", "recursive"}))
+        ->capture_default_str();
+    command->add_option("--threads", options->threads, "Worker threads (0 = one per hardware thread)")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
+    command->add_flag("--srgb8", options->srgb8, "Write an 8-bit sRGB PNG for viewing instead of 16-bit linear");
+    command->add_option("--exposure", options->exposure, "With --srgb8: multiply by 2^EV before the sRGB curve");
+    command->add_option("--aov", options->aovNames, "Also write an AOV: normal, depth, prim or cost (repeatable)")
+        ->check(CLI::IsMember({"normal", "depth", "prim", "cost"}))
+        ->allow_extra_args(false);  // one name per --aov, so a following SCENE is not taken
+    command->add_option("--aov-dir", options->aovDir, "Directory for AOV files OUT.<aov>.<ext> (default: OUT's)")
+        ->check(CLI::ExistingDirectory);
+    command->callback([options] { render(*options); });
+}
+
 }  // namespace rtlab::cli

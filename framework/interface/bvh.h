@@ -17,7 +17,9 @@ struct BvhNode {
     Bounds3f bounds;     // 24 bytes
     uint32_t offset;     // leaf: first entry in Bvh::primIndices; interior: second child
     uint16_t primCount;  // 0 for an interior node
-    uint8_t axis;        // split axis of an interior node (0 = x, 1 = y, 2 = z)
+    uint8_t axis;        // interior: the axis along which the second child lies beyond the
+                         // first (0 = x, 1 = y, 2 = z); traversal visits the first child first
+                         // when the ray's direction on this axis is positive
     uint8_t padding;
 
     bool isLeaf() const { return primCount > 0; }
@@ -34,6 +36,23 @@ struct BuildPrimitive {
     Bounds3f bounds;
     Vec3 centroid;   // centre of bounds
     uint32_t index;  // primitive id
+};
+
+// The pinned order of primitives along an axis (docs/a1-bvh.md#ordering): by centroid
+// coordinate, ties by primitive id, so every correct builder forms the same children. For
+// example std::nth_element(first, middle, last, CentroidOrder{axis}). A NaN coordinate sorts
+// like +inf, so even bad input keeps the order strict.
+struct CentroidOrder {
+    int axis;
+
+    bool operator()(const BuildPrimitive& a, const BuildPrimitive& b) const {
+        float ca = coordinate(a), cb = coordinate(b);
+        return ca < cb || (ca == cb && a.index < b.index);
+    }
+    float coordinate(const BuildPrimitive& p) const {
+        float c = p.centroid[axis];
+        return c == c ? c : kInfinity;
+    }
 };
 
 enum class SplitMethod { Median, Middle, EqualCounts, SahSweep, SahBuckets };

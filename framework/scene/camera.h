@@ -19,6 +19,9 @@ struct Camera {
 
     // Ray through the centre of pixel (column i, row j from the top) of a width x height image.
     Ray generateRay(int i, int j, int width, int height) const;
+    // Ray through any film position (x, y) in pixel units from the top-left corner: the pixel
+    // centre of (i, j) is (i + 0.5, j + 0.5). For antialiasing with samples inside a pixel.
+    Ray generateRayThrough(double x, double y, int width, int height) const;
 };
 
 }  // namespace rtlab

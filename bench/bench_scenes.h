@@ -1,0 +1,20 @@
+// The benchmark scenes by name (reference/performance-anchors.md §3.1): bunny and engine from
+// the models scripts/fetch-models prepares, sphereflake and randsoup generated; any other
+// argument is read as a glTF path.
+#pragma once
+
+#include "framework/scene/scene.h"
+
+#include <string>
+#include <vector>
+
+namespace rtlab::bench {
+
+// The default --scenes of a full run; randsoup is the optional stress case.
+const std::vector<std::string>& defaultSceneNames();
+
+// modelsDir holds bunny.gltf (scripts/fetch-models). Throws rtlab::Error naming the missing
+// file and the command that makes it.
+Scene loadBenchScene(const std::string& name, const std::string& modelsDir);
+
+}  // namespace rtlab::bench

@@ -1,0 +1,48 @@
+// A system under test: something that builds over a scene's triangles and answers closest-hit
+// queries one ray at a time. rtlab's accelerators and Embree are the two kinds
+// (reference/performance-anchors.md §3.3).
+#pragma once
+
+#include "framework/accel/traversal_stats.h"
+#include "framework/core/hit.h"
+#include "framework/core/vec.h"
+
+#include <optional>
+#include <span>
+#include <string>
+
+namespace rtlab::bench {
+
+// The shared ray array: origin and unit direction, 24 bytes. Every system builds its own ray
+// struct from it inside the timed loop, as the reference harness did.
+struct BenchRay {
+    Vec3 origin;
+    Vec3 direction;
+};
+
+// What every query stores: the hit distance and primitive (kNoHit on a miss).
+struct TraceResult {
+    float t = kInfinity;
+    uint32_t prim = kNoHit;
+};
+
+class BenchSystem {
+public:
+    virtual ~BenchSystem() = default;
+
+    // "rtlab:bvh-buckets:12", "embree:medium", ...
+    virtual std::string label() const = 0;
+    // Builds afresh with up to `threads` threads (rtlab's builders are single-threaded and
+    // ignore it). Only the build itself is timed, so the return value is its wall time in ms.
+    virtual double build(int threads) = 0;
+    // Closest hits of rays; stats receives node visits and primitive tests where the system
+    // counts them (rtlab does, Embree's release build does not).
+    virtual void trace(std::span<const BenchRay> rays, TraceResult* results, TraversalStats& stats) const = 0;
+
+    virtual bool countsWork() const = 0;
+    virtual std::optional<double> sahCost() const = 0;
+    // Memory of the built structure (without the input triangles), divided by the triangles.
+    virtual double bytesPerTriangle() const = 0;
+};
+
+}  // namespace rtlab::bench

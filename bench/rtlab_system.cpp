@@ -1,0 +1,51 @@
+#include "bench/rtlab_system.h"
+
+#include "framework/accel/bvh_accelerator.h"
+
+#include <chrono>
+
+namespace rtlab::bench {
+
+std::string rtlabLabel(const AcceleratorSpec& spec) {
+    std::string label = "rtlab:" + spec.name;
+    if (spec.maxLeaf != AcceleratorSpec{}.maxLeaf) label += ":L" + std::to_string(spec.maxLeaf);
+    return label;
+}
+
+RtlabSystem::RtlabSystem(const PrimitiveSet& primitives, const AcceleratorSpec& spec)
+    : primitives_(primitives), spec_(spec) {}
+
+std::string RtlabSystem::label() const { return rtlabLabel(spec_); }
+
+double RtlabSystem::build(int) {
+    accelerator_ = makeAccelerator(spec_);  // a fresh accelerator per build
+    auto start = std::chrono::steady_clock::now();
+    accelerator_->build(primitives_);
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+void RtlabSystem::trace(std::span<const BenchRay> rays, TraceResult* results, TraversalStats& stats) const {
+    const Accelerator& accelerator = *accelerator_;
+    for (const BenchRay& bench : rays) {
+        Ray ray;
+        ray.origin = bench.origin;
+        ray.direction = bench.direction;
+        Hit hit = accelerator.intersect(ray, stats);
+        *results++ = TraceResult{hit.t, hit.prim};
+    }
+}
+
+std::optional<double> RtlabSystem::sahCost() const {
+    if (spec_.name == "brute") return std::nullopt;
+    return rtlab::sahCost(accelerator_->structure());
+}
+
+double RtlabSystem::bytesPerTriangle() const {
+    double triangles = std::max<uint32_t>(primitives_.size(), 1);
+    if (const auto* bvh = dynamic_cast<const BvhAccelerator*>(accelerator_.get()))
+        return static_cast<double>(bvh->bvh().nodes.size() * sizeof(BvhNode) +
+                                   bvh->bvh().primIndices.size() * sizeof(uint32_t)) / triangles;
+    return 0.0;  // brute force keeps nothing beyond the primitive set
+}
+
+}  // namespace rtlab::bench

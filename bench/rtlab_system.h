@@ -1,0 +1,36 @@
+// One of rtlab's accelerators (the implementation this executable links: the reference
+// solutions for rtlab-solution-bench, the student's code for rtlab-bench), driven through the
+// framework's Accelerator interface exactly as the renderer drives it.
+#pragma once
+
+#include "bench/bench_system.h"
+#include "framework/accel/accelerator.h"
+#include "framework/accel/primitive_set.h"
+
+#include <memory>
+
+namespace rtlab::bench {
+
+class RtlabSystem final : public BenchSystem {
+public:
+    RtlabSystem(const PrimitiveSet& primitives, const AcceleratorSpec& spec);
+
+    std::string label() const override;
+    double build(int threads) override;
+    void trace(std::span<const BenchRay> rays, TraceResult* results, TraversalStats& stats) const override;
+    bool countsWork() const override { return true; }
+    std::optional<double> sahCost() const override;
+    double bytesPerTriangle() const override;
+
+    const Accelerator& accelerator() const { return *accelerator_; }
+
+private:
+    const PrimitiveSet& primitives_;
+    AcceleratorSpec spec_;
+    std::unique_ptr<Accelerator> accelerator_;
+};
+
+// "rtlab:" + the --accel name, with ":L<maxLeaf>" when maxLeaf is not the default 4.
+std::string rtlabLabel(const AcceleratorSpec& spec);
+
+}  // namespace rtlab::bench

@@ -1,0 +1,67 @@
+#include "framework/core/ray_file.h"
+
+#include "framework/core/error.h"
+
+#include <charconv>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+namespace rtlab {
+namespace {
+
+// Parses one whitespace-free token as a float; accepts a leading '+', nan and inf.
+bool parseFloat(const std::string& token, float* value) {
+    const char* first = token.data();
+    const char* last = first + token.size();
+    if (first != last && *first == '+') ++first;
+    auto [end, ec] = std::from_chars(first, last, *value);
+    return ec == std::errc() && end == last;
+}
+
+}  // namespace
+
+std::vector<Ray> readRayFile(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw Error(path + ": cannot open the ray file");
+    std::vector<Ray> rays;
+    std::string line;
+    for (int lineNumber = 1; std::getline(in, line); ++lineNumber) {
+        line = line.substr(0, line.find('#'));
+        std::istringstream tokens(line);
+        std::vector<float> numbers;
+        for (std::string token; tokens >> token;) {
+            float value;
+            if (!parseFloat(token, &value))
+                throw Error(path + ":" + std::to_string(lineNumber) + ": '" + token + "' is not a float");
+            numbers.push_back(value);
+        }
+        if (numbers.empty()) continue;
+        if (numbers.size() != 6 && numbers.size() != 8)
+            throw Error(path + ":" + std::to_string(lineNumber) + ": expected 6 or 8 numbers (ox oy oz dx dy dz [tmin tmax]), found " +
+                        std::to_string(numbers.size()));
+        Ray ray;
+        ray.origin = {numbers[0], numbers[1], numbers[2]};
+        ray.direction = {numbers[3], numbers[4], numbers[5]};
+        if (numbers.size() == 8) {
+            ray.tMin = numbers[6];
+            ray.tMax = numbers[7];
+        }
+        rays.push_back(ray);
+    }
+    if (in.bad()) throw Error(path + ": read error");
+    return rays;
+}
+
+void writeRayFile(const std::string& path, const std::vector<Ray>& rays) {
+    std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "w"), std::fclose);
+    if (!file) throw Error(path + ": cannot write the ray file");
+    std::fputs("# ox oy oz dx dy dz tmin tmax\n", file.get());
+    for (const Ray& r : rays)
+        std::fprintf(file.get(), "%.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g\n", r.origin.x, r.origin.y, r.origin.z,
+                     r.direction.x, r.direction.y, r.direction.z, r.tMin, r.tMax);
+    if (std::ferror(file.get())) throw Error(path + ": write error");
+}
+
+}  // namespace rtlab

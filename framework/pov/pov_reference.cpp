@@ -1,0 +1,50 @@
+#include "framework/pov/pov_reference.h"
+
+#include "framework/core/error.h"
+#include "framework/pov/pov_exporter.h"
+#include "framework/pov/povray_process.h"
+
+#include <fstream>
+
+namespace rtlab {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<std::string> povReferenceArguments(int width, int height) {
+    return {"+W" + std::to_string(width), "+H" + std::to_string(height), "-A", "-D", "+FN16",
+            "File_Gamma=1.0"};
+}
+
+}  // namespace
+
+std::string povReferenceSettings(int width, int height) {
+    std::string settings;
+    for (const std::string& argument : povReferenceArguments(width, height))
+        settings += (settings.empty() ? "" : " ") + argument;
+    return settings;
+}
+
+void renderPovReference(const Scene& scene, const Camera& camera, int width, int height,
+                        const fs::path& outputPng) {
+    if (width <= 0 || height <= 0)
+        throw Error("POV-Ray reference: image size " + std::to_string(width) + "x" +
+                    std::to_string(height) + " is not positive");
+    TemporaryDirectory work("rtlab-povray");
+    {
+        std::ofstream pov(work.path() / "scene.pov");
+        pov << exportPovScene(scene, camera, width, height);
+        if (!pov) throw Error((work.path() / "scene.pov").string() + ": cannot write the POV-Ray scene");
+    }
+    std::vector<std::string> arguments{"-Iscene.pov"};
+    for (const std::string& argument : povReferenceArguments(width, height)) arguments.push_back(argument);
+    arguments.push_back("-Oimage.png");
+    runPovrayOrThrow(arguments, work, "rendering " + scene.sourcePath);
+
+    std::error_code error;
+    fs::copy_file(work.path() / "image.png", outputPng, fs::copy_options::overwrite_existing, error);
+    if (error)
+        throw Error(outputPng.string() + ": cannot write the POV-Ray reference: " + error.message());
+}
+
+}  // namespace rtlab

@@ -1,0 +1,51 @@
+// The procedural benchmark meshes of reference/performance-anchors.md §3.1, generated bit for
+// bit as specified there (this file's .cpp is compiled with -ffp-contract=off), and the
+// benchmark viewpoint that every benchmark scene shares (§3.2, primary rays).
+#pragma once
+
+#include "framework/core/bounds.h"
+#include "framework/scene/scene.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rtlab {
+
+// An indexed triangle mesh in world space, the form the reference page describes.
+struct TriangleMesh {
+    std::vector<Vec3> positions;
+    std::vector<std::array<uint32_t, 3>> indices;
+
+    Bounds3f bounds() const;
+};
+
+// 7,381 spheres (recursion depth 4, 9 children of a third of the radius each) of 144
+// triangles: 1,062,864 triangles.
+TriangleMesh makeSphereflake();
+
+// 2^20 small triangles (edge ~0.02) with centres uniform in [0,1)^3, from PCG32 seed 7 on
+// stream 54: a stress case with heavy overlap.
+TriangleMesh makeRandomSoup();
+
+inline constexpr uint32_t kSphereflakeTriangles = 1'062'864;
+inline constexpr uint32_t kRandomSoupTriangles = 1u << 20;
+
+// The names `rtlab scene generate` accepts: "sphereflake", "randsoup".
+const std::vector<std::string>& generatedSceneNames();
+
+// The scene of a generated mesh: the mesh with one white Lambert material, the benchmark
+// camera (benchmarkView) and one point light beside it, so that it renders as is. Throws
+// rtlab::Error naming the valid names for an unknown name.
+Scene makeGeneratedScene(const std::string& name);
+
+// A generated scene when nameOrPath is one of generatedSceneNames(), else loadGltf(nameOrPath).
+Scene loadOrGenerateScene(const std::string& nameOrPath);
+
+// A renderable scene around any mesh (same material, camera and light as above).
+Scene sceneFromMesh(TriangleMesh mesh, const std::string& sourcePath);
+
+// FNV-1a 64 over the 9 floats of every triangle in index order (performance-anchors.md §3.2).
+uint64_t triangleChecksum(const Scene& scene);
+
+}  // namespace rtlab

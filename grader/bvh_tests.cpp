@@ -1,0 +1,463 @@
+#include "grader/bvh_tests.h"
+
+#include "framework/accel/traversal.h"
+#include "framework/interface/a1_bvh.h"
+#include "grader/bvh_structure.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace rtlab::grader {
+namespace {
+
+constexpr const char* kStubOrdered = "a1 intersectBvh (assignments/a1_bvh/bvh_traverse.cpp)";
+constexpr const char* kStubRecursive = "a1 intersectBvhRecursive (assignments/a1_bvh/bvh_traverse.cpp)";
+constexpr const char* kStubOccluded = "a1 occludedBvh (assignments/a1_bvh/bvh_traverse.cpp)";
+constexpr int kRaysPerScene = 1000;
+
+std::string formatNumber(double v) {
+    char buffer[48];
+    std::snprintf(buffer, sizeof buffer, "%.10g", v);
+    return buffer;
+}
+
+// Raw answers of one query: what the student's traversal returned and the work the framework
+// counted for it.
+struct RawQuery {
+    uint32_t prim;
+    float t;
+    uint32_t nodeVisits;
+    uint32_t primitiveTests;
+};
+
+// --- Child side -------------------------------------------------------------------------------
+
+struct ChildBvh {
+    Bvh bvh;
+};
+
+ChildPhase buildPhase(const BvhConfig& config, std::shared_ptr<const PrimitiveSet> primitives, std::shared_ptr<ChildBvh> state) {
+    BvhOptions options = config.options;
+    return {config.buildStub, [=](ByteWriter& out) {
+                std::vector<BuildPrimitive> prims(primitives->size());
+                for (uint32_t i = 0; i < primitives->size(); ++i)
+                    prims[i] = BuildPrimitive{primitives->bounds(i), primitives->centroid(i), i};
+                state->bvh = buildBvh(std::move(prims), options);
+                out.putVector(state->bvh.nodes);
+                out.putVector(state->bvh.primIndices);
+            }};
+}
+
+enum class Query { Ordered, Recursive, Occluded };
+
+ChildPhase queryPhase(Query query, std::shared_ptr<const PrimitiveSet> primitives, std::shared_ptr<ChildBvh> state,
+                      std::shared_ptr<const std::vector<Ray>> rays) {
+    const char* stub = query == Query::Ordered ? kStubOrdered : query == Query::Recursive ? kStubRecursive : kStubOccluded;
+    return {stub, [=](ByteWriter& out) {
+                std::vector<RawQuery> answers;
+                answers.reserve(rays->size());
+                for (const Ray& ray : *rays) {
+                    TraversalStats stats;
+                    Traversal traversal(*primitives, ray, stats);
+                    RawQuery answer{kNoHit, 0.0f, 0, 0};
+                    if (query == Query::Occluded) {
+                        answer.prim = occludedBvh(state->bvh, traversal) ? 1 : 0;
+                    } else {
+                        Hit hit;
+                        hit.t = ray.tMax;
+                        bool found = query == Query::Ordered ? intersectBvh(state->bvh, traversal, hit)
+                                                             : intersectBvhRecursive(state->bvh, traversal, hit);
+                        answer.prim = found ? hit.prim : kNoHit;
+                        answer.t = hit.t;
+                    }
+                    answer.nodeVisits = static_cast<uint32_t>(stats.nodeVisits);
+                    answer.primitiveTests = static_cast<uint32_t>(stats.primitiveTests);
+                    answers.push_back(answer);
+                }
+                out.putVector(answers);
+            }};
+}
+
+// --- Parent side ------------------------------------------------------------------------------
+
+std::optional<Bvh> readBvh(const PhaseOutcome& outcome, size_t primCount, std::string* problem) {
+    try {
+        ByteReader in(outcome.data);
+        Bvh bvh;
+        bvh.nodes = in.getVector<BvhNode>(4 * primCount + 16);
+        bvh.primIndices = in.getVector<uint32_t>(4 * primCount + 16);
+        return bvh;
+    } catch (const WireError& e) {
+        *problem = std::string("the build sent malformed results: ") + e.what();
+        return std::nullopt;
+    }
+}
+
+std::optional<std::vector<RawQuery>> readQueries(const PhaseOutcome& outcome, size_t count, TestResult& result) {
+    if (failedPhaseResult(outcome, result)) return std::nullopt;
+    try {
+        ByteReader in(outcome.data);
+        auto answers = in.getVector<RawQuery>(count);
+        if (answers.size() != count) throw WireError("wrong number of answers");
+        return answers;
+    } catch (const WireError& e) {
+        result.status = TestStatus::Failed;
+        result.reason = std::string("sent malformed results: ") + e.what();
+        return std::nullopt;
+    }
+}
+
+void pass(TestResult& result, const std::string& detail) {
+    result.status = TestStatus::Passed;
+    result.fraction = 1.0;
+    result.reason.clear();
+    if (!detail.empty()) result.details.push_back(detail);
+}
+
+void fail(TestResult& result, const std::string& reason) {
+    result.status = TestStatus::Failed;
+    result.fraction = 0.0;
+    result.reason = reason;
+}
+
+double meanWork(const std::vector<RawQuery>& answers) {
+    double sum = 0.0;
+    for (const RawQuery& a : answers) sum += double(a.nodeVisits) + a.primitiveTests;
+    return answers.empty() ? 0.0 : sum / double(answers.size());
+}
+
+// Judges closest-hit answers ray by ray; fills result, returns the number of wrong rays.
+size_t judgeClosestHits(PreparedScene& scene, const std::vector<RawQuery>& answers, TestResult& result, const std::string& tag) {
+    size_t wrong = 0;
+    std::string first;
+    for (size_t i = 0; i < answers.size(); ++i) {
+        const Ray& ray = scene.rays.rays[i];
+        std::string problem = scene.judge->judgeClosest(i, ray, scene.rays.mustHit[i], HitAnswer{answers[i].prim, answers[i].t});
+        if (problem.empty()) continue;
+        std::string line = tag + "ray " + std::to_string(i) + " (" + rayKindName(scene.rays.kinds[i]) + ") " + describeRay(ray) + ": " + problem;
+        if (wrong++ < 5) result.details.push_back(line);
+        if (first.empty()) first = line;
+    }
+    if (wrong == 0) pass(result, tag + std::to_string(answers.size()) + " rays, all right");
+    else fail(result, std::to_string(wrong) + " of " + std::to_string(answers.size()) + " rays wrong; first: " + first);
+    return wrong;
+}
+
+size_t judgeOcclusion(PreparedScene& scene, const std::vector<RawQuery>& answers, TestResult& result, const std::string& tag) {
+    size_t wrong = 0;
+    std::string first;
+    for (size_t i = 0; i < answers.size(); ++i) {
+        const Ray& ray = scene.anyHitRays[i];
+        std::string problem = scene.anyHitJudge->judgeOccluded(i, ray, false, answers[i].prim != 0);
+        if (problem.empty()) continue;
+        std::string line = tag + "ray " + std::to_string(i) + " (" + rayKindName(scene.rays.kinds[i]) + ") " + describeRay(ray) + ": " + problem;
+        if (wrong++ < 5) result.details.push_back(line);
+        if (first.empty()) first = line;
+    }
+    if (wrong == 0) pass(result, tag + std::to_string(answers.size()) + " any-hit rays, all right");
+    else fail(result, std::to_string(wrong) + " of " + std::to_string(answers.size()) + " any-hit rays wrong; first: " + first);
+    return wrong;
+}
+
+std::shared_ptr<PreparedScene> prepare(TestScene test, uint64_t seed) {
+    auto scene = std::make_shared<PreparedScene>();
+    scene->test = std::move(test);
+    const Scene& s = scene->test.scene;
+    scene->primitives = std::make_unique<PrimitiveSet>(s);
+    for (uint32_t i = 0; i < s.primitiveCount(); ++i) scene->primBounds.push_back(s.primitiveBounds(i));
+    scene->rays = makeRaySet(scene->test, kRaysPerScene, seed);
+    scene->anyHitRays = withRandomTMax(scene->rays.rays, s, seed);
+    scene->sha256 = sceneGeometrySha256(s);
+    scene->judge = std::make_unique<HitJudge>(s, scene->rays.rays.size());
+    scene->anyHitJudge = std::make_unique<HitJudge>(s, scene->anyHitRays.size());
+    return scene;
+}
+
+const PreparedScenes& hitSetScenes(GradingContext& context) {
+    if (!context.scenes) {
+        context.scenes = std::make_shared<PreparedScenes>();
+        for (TestScene& test : grader::hitSetScenes(context.modelsDir))
+            context.scenes->list.push_back(prepare(std::move(test), context.seed));
+    }
+    return *context.scenes;
+}
+
+// Shares the PrimitiveSet with the child phases without copying it.
+std::shared_ptr<const PrimitiveSet> primitivesOf(const std::shared_ptr<PreparedScene>& scene) {
+    return std::shared_ptr<const PrimitiveSet>(scene, scene->primitives.get());
+}
+
+TestGroup hitSetGroup(const BvhConfig& config, std::shared_ptr<PreparedScene> scene, GradingContext& context) {
+    auto state = std::make_shared<ChildBvh>();
+    auto primitives = primitivesOf(scene);
+    auto rays = std::shared_ptr<const std::vector<Ray>>(scene, &scene->rays.rays);
+    auto anyHitRays = std::shared_ptr<const std::vector<Ray>>(scene, &scene->anyHitRays);
+    TestGroup group;
+    group.assignment = config.assignment;
+    group.title = config.assignment + " " + config.label + " on " + scene->test.id;
+    group.phases = {buildPhase(config, primitives, state), queryPhase(Query::Ordered, primitives, state, rays),
+                    queryPhase(Query::Occluded, primitives, state, anyHitRays)};
+    if (config.recursive) group.phases.push_back(queryPhase(Query::Recursive, primitives, state, rays));
+
+    group.score = [config, scene, &context](const SandboxRun& run, std::vector<TestResult>& results) {
+        const std::string prefix = config.assignment + "/" + config.label + "/";
+        const std::string tag = "[" + scene->test.id + "] ";
+        const std::string key = config.label + "/" + scene->test.id;
+        auto result = [&](const std::string& name) {
+            TestResult r = makeResult(config.assignment, prefix + name);
+            if (!scene->test.note.empty()) r.details.push_back(tag + scene->test.note);
+            return r;
+        };
+        TestResult structure = result("structure"), sah = result("sah-cost"), closest = result("closest-hits"),
+                   anyHit = result("any-hits"), efficiency = result("efficiency");
+        std::optional<Bvh> bvh;
+        bool structureValid = false;
+        if (!failedPhaseResult(run.phases[0], structure)) {
+            std::string problem;
+            bvh = readBvh(run.phases[0], scene->primBounds.size(), &problem);
+            if (!bvh) {
+                fail(structure, problem);
+            } else {
+                BvhStructureReport report = checkBvhStructure(*bvh, scene->primBounds, true);
+                structureValid = report.problems.empty();
+                for (const std::string& p : report.problems) structure.details.push_back(tag + p);
+                if (structureValid)
+                    pass(structure, tag + std::to_string(bvh->nodes.size()) + " nodes, " + std::to_string(report.leaves) +
+                                        " leaves, depth " + std::to_string(report.depth));
+                else
+                    fail(structure, std::to_string(report.problemCount) + " problems; first: " + report.problems.front());
+            }
+        }
+        sah.status = structure.status == TestStatus::NotStarted ? TestStatus::NotStarted : TestStatus::Failed;
+        sah.reason = structure.reason;
+        efficiency.status = sah.status;
+        efficiency.reason = structure.reason;
+
+        auto ordered = readQueries(run.phases[1], scene->rays.rays.size(), closest);
+        auto occluded = readQueries(run.phases[2], scene->anyHitRays.size(), anyHit);
+        size_t wrongHits = 0;
+        if (ordered) wrongHits += judgeClosestHits(*scene, *ordered, closest, tag);
+        if (occluded) wrongHits += judgeOcclusion(*scene, *occluded, anyHit, tag);
+        if (config.recursive) {
+            TestResult recursive = result("recursive-hits");
+            if (auto answers = readQueries(run.phases[3], scene->rays.rays.size(), recursive))
+                wrongHits += judgeClosestHits(*scene, *answers, recursive, tag);
+            results.push_back(std::move(recursive));
+        }
+
+        if (structureValid) {
+            double cost = graderSahCost(*bvh);
+            ReferenceData& reference = context.reference;
+            if (reference.writing()) {
+                if (wrongHits == 0 && ordered && occluded) {
+                    reference.record(key, BvhReference{scene->sha256, cost, meanWork(*ordered), meanWork(*occluded)});
+                    pass(sah, tag + "SAH cost " + formatNumber(cost) + " recorded as the reference");
+                    pass(efficiency, tag + "work per ray recorded as the reference");
+                } else {
+                    fail(sah, "not recorded: this implementation fails its own hit-set tests");
+                    fail(efficiency, sah.reason);
+                }
+            } else {
+                std::string whyNot;
+                auto ref = reference.find(key, scene->sha256, &whyNot);
+                if (!ref) {
+                    fail(sah, whyNot);
+                    fail(efficiency, whyNot);
+                } else {
+                    double tolerance = config.exactSah ? 1e-12 : kSahTolerance;
+                    std::string line = tag + "SAH cost " + formatNumber(cost) + ", reference " + formatNumber(ref->sahCost) +
+                                       " (" + (config.exactSah ? "must match exactly" : "within 1e-4 relative") + ")";
+                    if (std::abs(cost - ref->sahCost) <= tolerance * ref->sahCost) pass(sah, line);
+                    else {
+                        sah.details.push_back(line);
+                        fail(sah, line);
+                    }
+                    if (ordered && occluded) {
+                        double closestWork = meanWork(*ordered), occludedWork = meanWork(*occluded);
+                        double closestBound = kWorkFactor * ref->closestWorkPerRay + kWorkSlack;
+                        double occludedBound = kWorkFactor * ref->occludedWorkPerRay + kWorkSlack;
+                        std::string line2 = tag + "node visits + primitive tests per ray: closest " + formatNumber(closestWork) +
+                                            " (reference " + formatNumber(ref->closestWorkPerRay) + "), any-hit " +
+                                            formatNumber(occludedWork) + " (reference " + formatNumber(ref->occludedWorkPerRay) +
+                                            "); allowed 1.5x + 2";
+                        if (closestWork <= closestBound && occludedWork <= occludedBound) pass(efficiency, line2);
+                        else {
+                            efficiency.details.push_back(line2);
+                            fail(efficiency, "too much work per ray: " + line2);
+                        }
+                    } else {
+                        fail(efficiency, "the traversal did not complete: " + (ordered ? anyHit.reason : closest.reason));
+                    }
+                }
+            }
+        } else if (structure.status != TestStatus::NotStarted && bvh) {
+            fail(sah, "the structure is invalid, so its SAH cost means nothing");
+            fail(efficiency, sah.reason);
+        }
+        for (TestResult* r : {&structure, &sah, &closest, &anyHit, &efficiency}) results.push_back(std::move(*r));
+    };
+    return group;
+}
+
+// --- Degenerate inputs (stress catalogue) -----------------------------------------------------
+
+struct StressRay {
+    Ray ray;
+    bool occlusionQuery;       // any-hit with ray.tMax instead of closest hit
+    bool hit;                  // exact expectation
+    std::vector<uint32_t> prims;  // allowed primitives when hit
+    float t;
+};
+
+struct StressScene {
+    std::string id;
+    Scene scene;
+    std::vector<StressRay> rays;
+};
+
+std::vector<StressScene> stressScenes() {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    std::vector<StressScene> scenes;
+    auto ray = [](Vec3 o, Vec3 d, float tMax = kInfinity) {
+        Ray r;
+        r.origin = o;
+        r.direction = d;
+        r.tMax = tMax;
+        return r;
+    };
+    {
+        SceneBuilder b;
+        for (int a = 1; a <= 64; ++a) b.addTriangle({-float(a), -1, -1}, {float(a), -1, 1}, {0, 2, 0});
+        scenes.push_back({"BVH-01 identical centroids", b.take(), {{ray({0.5f, 0, 10}, {0, 0, -1}), false, true, {0}, 9.5f}}});
+    }
+    {
+        SceneBuilder b;
+        for (int k = 0; k < 64; ++k) b.addTriangle({float(k), -1, -100}, {float(k), 1, -100}, {float(k), 0, 200});
+        scenes.push_back({"BVH-02 zero centroid extent on the longest axis", b.take(), {{ray({-1, 0, 0}, {1, 0, 0}), false, true, {0}, 1}}});
+    }
+    {
+        SceneBuilder b;
+        std::vector<StressRay> rays;
+        const float centres[] = {0.0f, 0.5f, 1.0f, 3.0f, 3.1f};
+        for (uint32_t i = 0; i < 5; ++i) {
+            float cx = centres[i];
+            b.addTriangle({cx - 0.1f, 5.0f * i, 0}, {cx + 0.1f, 5.0f * i, 0}, {cx, 5.0f * i + 0.1f, 0.1f});
+            rays.push_back({ray({cx, 5.0f * i + 0.05f, 1}, {0, 0, -1}), false, true, {i}, 0.95f});
+        }
+        scenes.push_back({"BVH-03 bucket index clamp", b.take(), rays});
+    }
+    {
+        SceneBuilder b;
+        b.addTriangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+        scenes.push_back({"BVH-07 one primitive", b.take(), {{ray({0.25f, 0.25f, 1}, {0, 0, -1}), false, true, {0}, 1}}});
+    }
+    {
+        SceneBuilder b;
+        b.addTriangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+        b.addTriangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+        scenes.push_back({"BVH-07 two identical primitives", b.take(), {{ray({0.25f, 0.25f, 1}, {0, 0, -1}), false, true, {0, 1}, 1}}});
+    }
+    {
+        SceneBuilder b;
+        for (int i = 0; i < 10; ++i) b.addTriangle({float(i), 0, 0}, {i + 0.5f, 0, 0}, {float(i + 1), 0, 0});
+        std::vector<StressRay> rays = {{ray({2.25f, 0, 5}, {0, 0, -1}), false, false, {}, 0},
+                                       {ray({-1, 0, 0}, {1, 0, 0}), false, false, {}, 0},
+                                       {ray({2.25f, 0, 5}, {0, 0, -1}, 10), true, false, {}, 0}};
+        scenes.push_back({"BVH-08 degenerate primitives only", b.take(), rays});
+        SceneBuilder mixed;
+        for (int i = 0; i < 10; ++i) mixed.addTriangle({float(i), 0, 0}, {i + 0.5f, 0, 0}, {float(i + 1), 0, 0});
+        mixed.addTriangle({0, 0, -1}, {4, 0, -1}, {0, 4, -1});
+        scenes.push_back({"BVH-08 degenerate and valid", mixed.take(), {{ray({1, 1, 5}, {0, 0, -1}), false, true, {10}, 6}}});
+    }
+    {
+        SceneBuilder b;
+        b.addTriangle({0, 0, 0}, {1, 1, 1}, {2, 2, 2});
+        b.addTriangle({1, 1, 1}, {1, 1, 1}, {1, 1, 1});
+        b.addTriangle({0, 0, 0}, {0, 0, 0}, {1, 0, 0});
+        b.addTriangle({0, 0, -1}, {4, 0, -1}, {0, 4, -1});
+        scenes.push_back({"TRI-12 degenerate triangles", b.take(), {{ray({1, 1, 5}, {0, 0, -1}), false, true, {3}, 6}}});
+    }
+    for (float bad : {nan, kInfinity}) {
+        SceneBuilder b;
+        b.addTriangle({0, 0, 0}, {1, 0, 0}, {bad, 1, 0});
+        b.addTriangle({0, 0, -1}, {1, 0, -1}, {0, 1, -1});
+        std::vector<StressRay> rays = {{ray({0.2f, 0.2f, 1}, {0, 0, -1}), false, true, {1}, 2},
+                                       {ray({0.2f, 0.2f, 1}, {0, 0, -1}, 1.5f), true, false, {}, 0}};
+        scenes.push_back({std::string("TRI-13 ") + (std::isnan(bad) ? "NaN" : "infinite") + " vertex", b.take(), rays});
+    }
+    return scenes;
+}
+
+TestGroup stressGroup(const BvhConfig& config, std::shared_ptr<StressScene> stress) {
+    auto state = std::make_shared<ChildBvh>();
+    auto primitives = std::make_shared<PrimitiveSet>(stress->scene);
+    auto closestRays = std::make_shared<std::vector<Ray>>(), occlusionRays = std::make_shared<std::vector<Ray>>();
+    for (const StressRay& r : stress->rays) (r.occlusionQuery ? occlusionRays : closestRays)->push_back(r.ray);
+    TestGroup group;
+    group.assignment = config.assignment;
+    group.title = config.assignment + " " + config.label + " on " + stress->id;
+    group.phases = {buildPhase(config, primitives, state), queryPhase(Query::Ordered, primitives, state, closestRays),
+                    queryPhase(Query::Occluded, primitives, state, occlusionRays)};
+    group.score = [config, stress, primitives, closestRays, occlusionRays](const SandboxRun& run, std::vector<TestResult>& results) {
+        TestResult result = makeResult(config.assignment, config.assignment + "/" + config.label + "/degenerate-inputs");
+        const std::string tag = "[" + stress->id + "] ";
+        std::vector<std::string> problems;
+        if (failedPhaseResult(run.phases[0], result)) {
+            result.reason = tag + result.reason;
+            results.push_back(std::move(result));
+            return;
+        }
+        std::vector<Bounds3f> primBounds;
+        for (uint32_t i = 0; i < stress->scene.primitiveCount(); ++i) primBounds.push_back(stress->scene.primitiveBounds(i));
+        std::string wireProblem;
+        auto bvh = readBvh(run.phases[0], primBounds.size(), &wireProblem);
+        if (!bvh) problems.push_back(wireProblem);
+        else
+            for (const std::string& p : checkBvhStructure(*bvh, primBounds, false).problems) problems.push_back(p);
+        TestResult scratch;
+        auto closest = readQueries(run.phases[1], closestRays->size(), scratch);
+        auto occluded = readQueries(run.phases[2], occlusionRays->size(), scratch);
+        if (!closest || !occluded) problems.push_back(scratch.reason);
+        size_t ci = 0, oi = 0;
+        for (const StressRay& r : stress->rays) {
+            const RawQuery* a = r.occlusionQuery ? (occluded ? &(*occluded)[oi++] : nullptr) : (closest ? &(*closest)[ci++] : nullptr);
+            if (!a) continue;
+            std::string got;
+            bool right;
+            if (r.occlusionQuery) {
+                right = (a->prim != 0) == r.hit;
+                got = a->prim ? "occluded" : "not occluded";
+            } else if (!r.hit) {
+                right = a->prim == kNoHit;
+                got = right ? "a miss" : "prim " + std::to_string(a->prim) + " at t=" + formatNumber(a->t);
+            } else {
+                bool allowed = std::find(r.prims.begin(), r.prims.end(), a->prim) != r.prims.end();
+                right = allowed && std::abs(a->t - r.t) <= 1e-5f * std::max(1.0f, r.t);
+                got = a->prim == kNoHit ? "a miss" : "prim " + std::to_string(a->prim) + " at t=" + formatNumber(a->t);
+            }
+            if (right) continue;
+            std::string expected = r.occlusionQuery ? (r.hit ? "occluded" : "not occluded")
+                                   : r.hit          ? "a hit at t=" + formatNumber(r.t) + " on prim " + std::to_string(r.prims.front())
+                                                    : "a miss";
+            problems.push_back(describeRay(r.ray) + ": expected " + expected + ", got " + got);
+        }
+        for (const std::string& p : problems) result.details.push_back(tag + p);
+        if (problems.empty()) pass(result, tag + "built and answered correctly");
+        else fail(result, tag + problems.front());
+        results.push_back(std::move(result));
+    };
+    return group;
+}
+
+}  // namespace
+
+std::vector<TestGroup> bvhConfigGroups(const BvhConfig& config, GradingContext& context) {
+    std::vector<TestGroup> groups;
+    for (const auto& scene : hitSetScenes(context).list) groups.push_back(hitSetGroup(config, scene, context));
+    for (StressScene& stress : stressScenes()) groups.push_back(stressGroup(config, std::make_shared<StressScene>(std::move(stress))));
+    return groups;
+}
+
+}  // namespace rtlab::grader

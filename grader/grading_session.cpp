@@ -1,0 +1,95 @@
+#include "grader/grading_session.h"
+
+#include "framework/core/error.h"
+#include "grader/assignment_tests.h"
+#include "grader/rubric.h"
+
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+#include <map>
+#include <unistd.h>
+
+namespace rtlab::grader {
+
+void mergeSameNamed(std::vector<TestResult>& results) {
+    std::vector<TestResult> merged;
+    std::map<std::string, size_t> position;
+    std::map<std::string, size_t> parts;
+    for (TestResult& r : results) {
+        auto [it, inserted] = position.try_emplace(r.name, merged.size());
+        if (inserted) {
+            parts[r.name] = 1;
+            merged.push_back(std::move(r));
+            continue;
+        }
+        TestResult& m = merged[it->second];
+        size_t n = parts[r.name]++;
+        m.fraction = (m.fraction * double(n) + r.fraction) / double(n + 1);
+        m.seconds += r.seconds;
+        m.details.insert(m.details.end(), r.details.begin(), r.details.end());
+        m.images.insert(m.images.end(), r.images.begin(), r.images.end());
+        if (m.status == r.status && m.status != TestStatus::Failed) continue;  // all passed, or none started
+        // Mixed: a failure's reason says more than "not started", which says more than nothing.
+        if (m.status != TestStatus::Failed && (r.status == TestStatus::Failed || m.status == TestStatus::Passed)) m.reason = r.reason;
+        m.status = TestStatus::Failed;
+    }
+    results = std::move(merged);
+}
+
+GradingReport gradeLinkedImplementation(const GradingOptions& options) {
+    auto start = std::chrono::steady_clock::now();
+    GradingContext context;
+    context.seed = options.seed;
+    context.sourceDir = options.sourceDir;
+    context.modelsDir = options.modelsDir;
+    context.workDir = options.workDir;
+    std::string referenceDir = options.sourceDir + "/grader/reference";
+    context.reference = options.writeReference ? ReferenceData::forWriting(referenceDir) : ReferenceData::load(referenceDir);
+    Rubric rubric = Rubric::load(options.rubricPath.empty() ? options.sourceDir + "/grader/rubric.json" : options.rubricPath);
+
+    auto wanted = [&](const std::string& a) {
+        return options.assignments.empty() || std::find(options.assignments.begin(), options.assignments.end(), a) != options.assignments.end();
+    };
+    std::vector<TestGroup> groups;
+    auto add = [&](std::vector<TestGroup> more) {
+        for (TestGroup& g : more)
+            if (wanted(g.assignment)) groups.push_back(std::move(g));
+    };
+    if (wanted("a0")) add(a0Groups(context));
+    if (wanted("a1")) {
+        add(a1Groups(context));
+        add(imageGroups(context));
+    }
+    if (wanted("a2")) add(a2Groups(context));
+
+    GradingReport report;
+    report.implementation = options.implementation;
+    report.seed = options.seed;
+    TimeoutStrikes strikes;
+    bool terminal = options.progress && isatty(STDERR_FILENO);
+    for (size_t i = 0; i < groups.size(); ++i) {
+        const TestGroup& group = groups[i];
+        if (terminal) std::cerr << "\r\033[K[" << i + 1 << "/" << groups.size() << "] " << group.title << std::flush;
+        SandboxRun run;
+        if (!group.phases.empty()) run = runSandboxed(group.phases, options.limits, &strikes);
+        size_t before = report.tests.size();
+        try {
+            group.score(run, report.tests);
+        } catch (const WireError& e) {
+            report.tests.resize(before);
+            TestResult broken = makeResult(group.assignment, group.assignment + "/" + group.title);
+            broken.reason = std::string("sent malformed results: ") + e.what();
+            report.tests.push_back(broken);
+        }
+        if (report.studentOutput.size() < 4096) report.studentOutput += run.output.substr(0, 4096 - report.studentOutput.size());
+    }
+    if (terminal) std::cerr << "\r\033[K" << std::flush;
+    mergeSameNamed(report.tests);
+    rubric.apply(report.tests);
+    if (options.writeReference) context.reference.save();
+    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return report;
+}
+
+}  // namespace rtlab::grader

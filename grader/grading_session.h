@@ -1,0 +1,35 @@
+// One grading run over the implementation linked into this executable (docs/grading.md):
+// builds the test groups of the chosen assignments, runs each in sandboxed children, scores
+// them in this process and applies the rubric.
+#pragma once
+
+#include "grader/grading_report.h"
+#include "grader/sandbox.h"
+#include "grader/test_group.h"
+
+#include <string>
+#include <vector>
+
+namespace rtlab::grader {
+
+struct GradingOptions {
+    uint64_t seed = kDefaultSeed;
+    std::string sourceDir;   // repository root (scenes/, grader/rubric.json, grader/reference/)
+    std::string modelsDir;   // bunny.gltf
+    std::string workDir;     // renders and heat maps
+    std::string rubricPath;  // default sourceDir/grader/rubric.json
+    std::vector<std::string> assignments;  // empty: all of a0, a1, a2
+    SandboxLimits limits;
+    bool writeReference = false;  // record SAH costs and work per ray into grader/reference/
+    bool progress = true;         // progress lines on stderr when it is a terminal
+    std::string implementation;   // what is graded, for the reports
+};
+
+GradingReport gradeLinkedImplementation(const GradingOptions& options);
+
+// Merges results that share a name (one per scene) into one test: passed when all passed,
+// not started when all are, otherwise failed with the first failure's reason; the fraction is
+// the mean, so each scene carries an equal share of the points.
+void mergeSameNamed(std::vector<TestResult>& results);
+
+}  // namespace rtlab::grader

@@ -1,0 +1,127 @@
+#include "grader/hit_judge.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace rtlab::grader {
+
+std::string describeRay(const Ray& ray) {
+    char buffer[256];
+    std::snprintf(buffer, sizeof buffer, "o=(%.9g, %.9g, %.9g) d=(%.9g, %.9g, %.9g)", ray.origin.x, ray.origin.y,
+                  ray.origin.z, ray.direction.x, ray.direction.y, ray.direction.z);
+    std::string s = buffer;
+    if (ray.tMin != 0.0f || std::isfinite(ray.tMax)) {
+        std::snprintf(buffer, sizeof buffer, " t in (%.9g, %.9g]", ray.tMin, ray.tMax);
+        s += buffer;
+    }
+    return s;
+}
+
+namespace {
+
+std::string formatT(double t) {
+    char buffer[48];
+    std::snprintf(buffer, sizeof buffer, "%.9g", t);
+    return buffer;
+}
+
+}  // namespace
+
+// Every primitive the oracle finds on the ray (with the edge slack), with the tolerance a
+// float implementation is allowed on its distance: a few ulps of the quantities involved,
+// divided by how obliquely the ray meets the surface.
+std::vector<HitJudge::Candidate> HitJudge::findCandidates(const Ray& ray) const {
+    std::vector<Candidate> found;
+    OracleRay exact = OracleRay::from(ray);
+    exact.tMax = std::numeric_limits<double>::infinity();
+    double length = glm::length(exact.direction);
+    if (!(length > 0) || !std::isfinite(length)) return found;
+    double originScale = glm::length(exact.origin) / length;
+    for (uint32_t prim = 0; prim < scene_.primitiveCount(); ++prim) {
+        auto hit = oracle_.intersect(prim, exact, kEdgeSlack);
+        if (!hit) continue;
+        Candidate c{prim, hit->t, 0.0, false};
+        if (scene_.isSphere(prim)) {
+            const Sphere& s = scene_.sphere(prim);
+            DVec3 f = exact.origin - DVec3(s.centre);
+            DVec3 perpendicular = f - glm::dot(f, exact.direction) / (length * length) * exact.direction;
+            double margin = 1.0 - glm::dot(perpendicular, perpendicular) / (double(s.radius) * s.radius);
+            c.robust = margin >= 1e-3;
+            c.tolerance = 1e-5 * (std::abs(hit->t) + glm::length(f) / length + s.radius / length) /
+                          std::sqrt(std::max(margin, 1e-6));
+        } else {
+            double cosine = std::abs(glm::dot(hit->normal, exact.direction)) / length;
+            auto v = scene_.triangleVertices(prim);
+            double size = glm::length(DVec3(v[1] - v[0])) + glm::length(DVec3(v[2] - v[0]));
+            c.robust = hit->edgeMargin >= kRobustMargin;
+            c.tolerance = 1e-6 * std::abs(hit->t) +
+                          4e-6 * (std::abs(hit->t) + originScale + size / length) / std::max(cosine, 1e-4);
+        }
+        found.push_back(c);
+    }
+    return found;
+}
+
+const std::vector<HitJudge::Candidate>& HitJudge::candidates(size_t index, const Ray& ray) {
+    if (!cache_.at(index)) cache_[index] = findCandidates(ray);
+    return *cache_[index];
+}
+
+namespace {
+
+template <typename Candidates>
+std::string expectation(const Candidates& all, double tRequired) {
+    if (!std::isfinite(tRequired)) return "expected a miss (or a grazing hit)";
+    std::string ids;
+    int listed = 0;
+    for (const auto& c : all)
+        if (std::abs(c.t - tRequired) <= c.tolerance && listed++ < 6) {
+            if (!ids.empty()) ids += ',';
+            ids += std::to_string(c.prim);
+        }
+    return "expected a hit at t=" + formatT(tRequired) + (ids.empty() ? "" : " on prim {" + ids + "}");
+}
+
+}  // namespace
+
+std::string HitJudge::judgeClosest(size_t index, const Ray& ray, bool mustHit, const HitAnswer& answer) {
+    const auto& all = candidates(index, ray);
+    double tRequired = std::numeric_limits<double>::infinity();
+    double requiredTolerance = 0.0;
+    for (const Candidate& c : all)
+        if ((c.robust || mustHit) && c.t < tRequired) {
+            tRequired = c.t;
+            requiredTolerance = c.tolerance;
+        }
+    if (answer.prim == kNoHit) {
+        if (!std::isfinite(tRequired)) return "";
+        return expectation(all, tRequired) + ", got a miss";
+    }
+    std::string got = ", got prim " + std::to_string(answer.prim) + " at t=" + formatT(answer.t);
+    auto match = std::find_if(all.begin(), all.end(), [&](const Candidate& c) {
+        return c.prim == answer.prim && std::abs(c.t - double(answer.t)) <= c.tolerance;
+    });
+    if (match == all.end()) {
+        std::string why = answer.prim < scene_.primitiveCount() ? " (that primitive is not hit there)" : " (no such primitive)";
+        return expectation(all, tRequired) + got + why;
+    }
+    if (double(answer.t) > tRequired + requiredTolerance + match->tolerance)
+        return expectation(all, tRequired) + got + " (a closer hit was missed)";
+    if (!(answer.t > ray.tMin && answer.t <= ray.tMax)) return "a hit must satisfy tMin < t <= tMax" + got;
+    return "";
+}
+
+std::string HitJudge::judgeOccluded(size_t index, const Ray& ray, bool mustHit, bool occluded) {
+    const auto& all = candidates(index, ray);
+    bool anyPossible = false, required = false;
+    for (const Candidate& c : all) {
+        if (c.t - c.tolerance <= ray.tMax) anyPossible = true;
+        if ((c.robust || mustHit) && c.t + c.tolerance <= ray.tMax) required = true;
+    }
+    if (occluded && !anyPossible) return "expected not occluded (nothing in the segment), got occluded";
+    if (!occluded && required) return "expected occluded (a primitive blocks the segment), got not occluded";
+    return "";
+}
+
+}  // namespace rtlab::grader

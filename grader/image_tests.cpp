@@ -1,0 +1,154 @@
+// Images: every scene in scenes/ rendered with the student's BVH (a0 intersections, a1 median
+// build and ordered traversal) and compared with its POV-Ray reference in scenes/refs/.
+// A scene without a reference scores 0 with the reason "no reference", never a silent pass.
+#include "framework/accel/accelerator.h"
+#include "framework/core/error.h"
+#include "framework/render/image_compare.h"
+#include "framework/render/image_io.h"
+#include "framework/render/renderer.h"
+#include "framework/scene/gltf_loader.h"
+#include "grader/assignment_tests.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+namespace rtlab::grader {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kImageAssignment = "a1";
+constexpr const char* kImageAccelerator = "bvh-median";
+// A render passes when at most this share of its pixels differ from the reference by more
+// than kImageThresholdCodes 16-bit codes in some channel.
+constexpr double kImageThresholdCodes = 2.0;
+constexpr double kImageMaxShareOver = 0.005;
+
+std::string percent(double share) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.3f%%", 100.0 * share);
+    return buffer;
+}
+
+struct ImageJob {
+    std::string name;
+    Scene scene;
+    std::unique_ptr<PrimitiveSet> primitives;
+    Image reference;
+    std::string referencePath;
+};
+
+TestGroup renderGroup(std::shared_ptr<ImageJob> job, const std::string& workDir) {
+    TestGroup group;
+    group.assignment = kImageAssignment;
+    group.title = "render " + job->name;
+    const std::string stub = std::string("the renderer with --accel ") + kImageAccelerator + " (a0 + a1 functions)";
+    group.phases = {noSetUp(), {stub, [job](ByteWriter& out) {
+                                    AcceleratorSpec spec;
+                                    spec.name = kImageAccelerator;
+                                    auto accelerator = makeAccelerator(spec);
+                                    accelerator->build(*job->primitives);
+                                    RenderSettings settings;
+                                    settings.width = job->reference.width;
+                                    settings.height = job->reference.height;
+                                    settings.threads = 2;
+                                    settings.progress = false;
+                                    RenderResult result = Renderer(job->scene, job->scene.cameras.front(), *accelerator).render(settings);
+                                    out.put<int32_t>(result.colour.width);
+                                    out.put<int32_t>(result.colour.height);
+                                    out.put<int32_t>(result.colour.channels);
+                                    out.putVector(result.colour.pixels);
+                                }}};
+    group.score = [job, workDir](const SandboxRun& run, std::vector<TestResult>& results) {
+        TestResult result = makeResult(kImageAssignment, std::string(kImageAssignment) + "/images/" + job->name);
+        if (!failedPhaseResult(run.phases[1], result)) {
+            try {
+                ByteReader in(run.phases[1].data);
+                Image render;
+                render.width = in.get<int32_t>();
+                render.height = in.get<int32_t>();
+                render.channels = in.get<int32_t>();
+                if (render.width != job->reference.width || render.height != job->reference.height || render.channels != 3)
+                    throw WireError("the render has the wrong size");
+                render.pixels = in.getVector<float>(size_t(render.width) * render.height * 3);
+                if (render.pixels.size() != size_t(render.width) * render.height * 3) throw WireError("the render is incomplete");
+                ImageComparison c = compareImages(render, job->reference, kImageThresholdCodes);
+                fs::create_directories(workDir);
+                std::string base = workDir + "/" + job->name;
+                writeImage(base + "-render.png", render, ImageWriteOptions{true, 0.0f});
+                writeImage(base + "-reference.png", job->reference, ImageWriteOptions{true, 0.0f});
+                writeErrorHeatMap(render, job->reference, base + "-heatmap.png");
+                result.images = {{"your render", fs::absolute(base + "-render.png").string()},
+                                 {"POV-Ray reference", fs::absolute(base + "-reference.png").string()},
+                                 {"difference (" + errorHeatMapLegend() + ")", fs::absolute(base + "-heatmap.png").string()}};
+                std::string summary = percent(c.shareOverThreshold()) + " of pixels off by more than " +
+                                      std::to_string(int(kImageThresholdCodes)) + " codes (allowed " + percent(kImageMaxShareOver) +
+                                      "); mean error " + std::to_string(c.meanCodes()) + " codes, max " + std::to_string(c.maxCodes()) +
+                                      " at (" + std::to_string(c.maxX) + ", " + std::to_string(c.maxY) + ")";
+                result.details.push_back(summary);
+                result.details.push_back("reference: " + job->referencePath);
+                bool passed = c.shareOverThreshold() <= kImageMaxShareOver;
+                result.status = passed ? TestStatus::Passed : TestStatus::Failed;
+                result.fraction = passed ? 1.0 : 0.0;
+                result.reason = passed ? "" : summary;
+            } catch (const std::exception& e) {
+                result.status = TestStatus::Failed;
+                result.reason = e.what();
+            }
+        }
+        results.push_back(std::move(result));
+    };
+    return group;
+}
+
+// A test that cannot run (no reference, scene does not load): no phases, so no child; 0 points
+// and the reason.
+TestGroup unavailableGroup(const std::string& name, const std::string& reason) {
+    TestGroup group;
+    group.assignment = kImageAssignment;
+    group.title = "render " + name;
+    group.score = [name, reason](const SandboxRun&, std::vector<TestResult>& results) {
+        TestResult result = makeResult(kImageAssignment, std::string(kImageAssignment) + "/images/" + name);
+        result.reason = reason;
+        results.push_back(std::move(result));
+    };
+    return group;
+}
+
+}  // namespace
+
+std::vector<TestGroup> imageGroups(GradingContext& context) {
+    std::vector<TestGroup> groups;
+    fs::path scenes = fs::path(context.sourceDir) / "scenes";
+    if (!fs::is_directory(scenes)) return groups;
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::directory_iterator(scenes))
+        if (entry.path().extension() == ".gltf" || entry.path().extension() == ".glb") files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    for (const fs::path& file : files) {
+        std::string name = file.stem().string();
+        fs::path reference = scenes / "refs" / (name + ".png");
+        if (!fs::exists(reference)) {
+            groups.push_back(unavailableGroup(name, "no reference: " + reference.string() + " does not exist (an instructor runs rtlab refs)"));
+            continue;
+        }
+        auto job = std::make_shared<ImageJob>();
+        job->name = name;
+        job->referencePath = reference.string();
+        try {
+            job->scene = loadGltf(file.string());
+            if (job->scene.cameras.empty()) throw Error(file.string() + " has no camera");
+            job->reference = readImage(reference.string());
+        } catch (const std::exception& e) {
+            groups.push_back(unavailableGroup(name, e.what()));
+            continue;
+        }
+        job->primitives = std::make_unique<PrimitiveSet>(job->scene);
+        groups.push_back(renderGroup(job, context.workDir + "/images"));
+    }
+    return groups;
+}
+
+}  // namespace rtlab::grader

@@ -1,0 +1,48 @@
+// Reference values the grader compares against but cannot compute without the reference
+// solution (docs/grading.md, "Regenerating references"): the SAH cost of the reference BVH
+// and the reference traversal's work per ray, per scene and build configuration. They are
+// written by `rtlab-solution grade --write-reference` into grader/reference/bvh.json, with
+// the SHA-256 of each scene's geometry, and grader/reference/manifest.json holds the SHA-256
+// of that file, so stale or hand-edited values are reported instead of trusted.
+#pragma once
+
+#include "framework/scene/scene.h"
+
+#include <map>
+#include <optional>
+#include <string>
+
+namespace rtlab::grader {
+
+struct BvhReference {
+    std::string sceneSha256;
+    double sahCost = 0.0;
+    double closestWorkPerRay = 0.0;   // node visits + primitive tests, ordered closest hit
+    double occludedWorkPerRay = 0.0;  // the same for any-hit queries
+};
+
+class ReferenceData {
+public:
+    // Reads directory/bvh.json if present; problems (missing file, manifest mismatch) are kept
+    // and reported by every test that needs a value.
+    static ReferenceData load(const std::string& directory);
+    // An empty set that collects values and is written by save().
+    static ReferenceData forWriting(const std::string& directory);
+
+    bool writing() const { return writing_; }
+    // The entry for key if it exists and matches the scene; otherwise why not.
+    std::optional<BvhReference> find(const std::string& key, const std::string& sceneSha256, std::string* whyNot) const;
+    void record(const std::string& key, const BvhReference& value) { entries_[key] = value; }
+    void save() const;
+
+private:
+    std::string directory_;
+    bool writing_ = false;
+    std::string problem_;
+    std::map<std::string, BvhReference> entries_;
+};
+
+// SHA-256 of the geometry the grader builds over (positions, indices, spheres).
+std::string sceneGeometrySha256(const Scene& scene);
+
+}  // namespace rtlab::grader

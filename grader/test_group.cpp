@@ -1,0 +1,25 @@
+#include "grader/test_group.h"
+
+namespace rtlab::grader {
+
+ChildPhase noSetUp() {
+    return ChildPhase{"the grader's set-up", [](ByteWriter&) {}};
+}
+
+bool failedPhaseResult(const PhaseOutcome& outcome, TestResult& result) {
+    result.seconds += outcome.seconds;
+    if (outcome.status == PhaseStatus::Completed) return false;
+    result.status = outcome.status == PhaseStatus::NotStarted ? TestStatus::NotStarted : TestStatus::Failed;
+    result.fraction = 0.0;
+    result.reason = outcome.reason;
+    return true;
+}
+
+TestResult makeResult(const std::string& assignment, const std::string& name) {
+    TestResult result;
+    result.assignment = assignment;
+    result.name = name;
+    return result;
+}
+
+}  // namespace rtlab::grader

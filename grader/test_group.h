@@ -1,0 +1,50 @@
+// A test group: the phases one sandboxed child runs (student code, raw results only) and the
+// parent-side scoring that turns their raw results into test verdicts (docs/grading.md).
+#pragma once
+
+#include "grader/reference_data.h"
+#include "grader/sandbox.h"
+#include "grader/test_result.h"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rtlab::grader {
+
+inline constexpr uint64_t kDefaultSeed = 20260101;
+
+struct PreparedScenes;  // bvh_tests.h: the hit-set scenes, shared by a1 and a2
+
+// Everything a group needs from the grading run.
+struct GradingContext {
+    uint64_t seed = kDefaultSeed;
+    std::string sourceDir;  // repository root: scenes/refs, grader/reference
+    std::string modelsDir;  // where make models puts bunny.gltf
+    std::string workDir;    // renders and heat maps for the HTML report
+    ReferenceData reference;
+    std::shared_ptr<PreparedScenes> scenes;  // built on first use
+};
+
+struct TestGroup {
+    std::string assignment;  // "a0"
+    std::string title;       // for progress lines
+    std::vector<ChildPhase> phases;
+    // Appends one TestResult per test of the group. Runs in the parent after the child ended,
+    // so nothing it computes (oracle answers) is visible to the child.
+    std::function<void(const SandboxRun&, std::vector<TestResult>&)> score;
+};
+
+// A phase 0 for groups whose tests need no shared set-up.
+ChildPhase noSetUp();
+
+// The verdict for a test whose phase did not complete: "not started" for NotImplemented,
+// otherwise failed with the sandbox's one-line reason. Returns false when the phase completed.
+bool failedPhaseResult(const PhaseOutcome& outcome, TestResult& result);
+
+// A result named by its test with the assignment set; status failed until scored.
+TestResult makeResult(const std::string& assignment, const std::string& name);
+
+}  // namespace rtlab::grader

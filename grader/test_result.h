@@ -1,0 +1,39 @@
+// The verdict on one graded test, as every report prints it (docs/grading.md, "Reading the
+// report"). Scores are filled in from the rubric after the test ran.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace rtlab::grader {
+
+enum class TestStatus { Passed, Failed, NotStarted };
+
+const char* testStatusName(TestStatus status);  // "passed", "failed", "not started"
+
+// An image a report shows next to others (render, reference, heat map).
+struct ReportImage {
+    std::string label;
+    std::string path;  // absolute
+};
+
+struct TestResult {
+    std::string assignment;  // "a0"
+    std::string name;        // "a0/slab/face-planes": the key the rubric matches
+    TestStatus status = TestStatus::Failed;
+    double fraction = 0.0;             // share of the points earned; 1 when passed
+    std::string reason;                // one line; empty when passed
+    std::vector<std::string> details;  // further lines: failing rays, costs, per-scene results
+    std::vector<ReportImage> images;
+    double seconds = 0.0;
+
+    // From the rubric.
+    double maxScore = 0.0;
+    double score = 0.0;
+    std::string visibility = "visible";
+};
+
+// Passed when every case passed; otherwise failed with partial credit passed/total.
+void setFromCounts(TestResult& result, size_t passed, size_t total, const std::string& firstFailure);
+
+}  // namespace rtlab::grader

@@ -1,0 +1,153 @@
+#include "grader/test_scenes.h"
+
+#include "framework/core/error.h"
+#include "framework/core/pcg32.h"
+#include "framework/scene/gltf_loader.h"
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+
+namespace rtlab::grader {
+
+SceneBuilder::SceneBuilder() { scene_.materials.push_back(Material{"grey", Vec3(0.8f), Vec3(0.0f)}); }
+
+void SceneBuilder::addTriangle(const Vec3& a, const Vec3& b, const Vec3& c) {
+    auto base = static_cast<uint32_t>(scene_.triangles.positions.size());
+    scene_.triangles.positions.insert(scene_.triangles.positions.end(), {a, b, c});
+    scene_.triangles.indices.push_back({base, base + 1, base + 2});
+    scene_.triangles.material.push_back(0);
+    scene_.triangles.smooth.push_back(0);
+}
+
+void SceneBuilder::addMesh(const std::vector<Vec3>& positions, const std::vector<std::array<uint32_t, 3>>& indices) {
+    auto base = static_cast<uint32_t>(scene_.triangles.positions.size());
+    scene_.triangles.positions.insert(scene_.triangles.positions.end(), positions.begin(), positions.end());
+    for (const auto& t : indices) {
+        scene_.triangles.indices.push_back({base + t[0], base + t[1], base + t[2]});
+        scene_.triangles.material.push_back(0);
+        scene_.triangles.smooth.push_back(0);
+    }
+}
+
+void SceneBuilder::addSphere(const Vec3& centre, float radius) { scene_.spheres.push_back(Sphere{centre, radius, 0}); }
+
+namespace {
+
+struct Mesh {
+    std::vector<Vec3> positions;
+    std::vector<std::array<uint32_t, 3>> indices;
+};
+
+// Subdivides every triangle into four; midpoints are shared through an edge map so the mesh
+// stays closed with bit-identical shared vertices.
+Mesh subdividedIcosahedron(int levels) {
+    const float g = (1.0f + std::sqrt(5.0f)) / 2.0f;
+    Mesh mesh;
+    mesh.positions = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
+                      {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+    mesh.indices = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                    {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
+                    {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+    for (Vec3& p : mesh.positions) p = glm::normalize(p);
+    for (int level = 0; level < levels; ++level) {
+        std::map<std::pair<uint32_t, uint32_t>, uint32_t> midpoints;
+        auto midpoint = [&](uint32_t a, uint32_t b) {
+            auto key = std::minmax(a, b);
+            auto [it, inserted] = midpoints.try_emplace(key, static_cast<uint32_t>(mesh.positions.size()));
+            if (inserted) mesh.positions.push_back(glm::normalize(mesh.positions[a] + mesh.positions[b]));
+            return it->second;
+        };
+        std::vector<std::array<uint32_t, 3>> finer;
+        for (const auto& t : mesh.indices) {
+            uint32_t ab = midpoint(t[0], t[1]), bc = midpoint(t[1], t[2]), ca = midpoint(t[2], t[0]);
+            finer.push_back({t[0], ab, ca});
+            finer.push_back({t[1], bc, ab});
+            finer.push_back({t[2], ca, bc});
+            finer.push_back({ab, bc, ca});
+        }
+        mesh.indices = std::move(finer);
+    }
+    return mesh;
+}
+
+float uniform(Pcg32& rng, float lo, float hi) { return lo + (hi - lo) * rng.uniform(); }
+
+// An axis-aligned box [lo, hi] as 12 triangles with shared corners.
+void addBox(SceneBuilder& builder, const Vec3& lo, const Vec3& hi) {
+    std::vector<Vec3> corners;
+    for (int i = 0; i < 8; ++i) corners.push_back({i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z});
+    builder.addMesh(corners, {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                              {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}});
+}
+
+}  // namespace
+
+TestScene icosphere(int levels) {
+    SceneBuilder builder;
+    Mesh mesh = subdividedIcosahedron(levels);
+    builder.addMesh(mesh.positions, mesh.indices);
+    TestScene s{"icosphere-" + std::to_string(levels), "", builder.take(), true, Vec3(0.1f, -0.2f, 0.05f)};
+    return s;
+}
+
+TestScene triangleSoup(int count, uint64_t seed) {
+    SceneBuilder builder;
+    Pcg32 rng(seed, 7);
+    for (int i = 0; i < count; ++i) {
+        Vec3 centre(rng.uniform(), rng.uniform(), rng.uniform());
+        float size = uniform(rng, 0.01f, 0.2f);
+        auto corner = [&] { return centre + size * Vec3(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)); };
+        Vec3 a = corner(), b = corner(), c = corner();
+        builder.addTriangle(a, b, c);
+    }
+    for (int i = 0; i < 8; ++i) builder.addSphere({rng.uniform(), rng.uniform(), rng.uniform()}, uniform(rng, 0.02f, 0.1f));
+    return TestScene{"soup-" + std::to_string(count), "", builder.take(), false, Vec3(0.0f)};
+}
+
+TestScene cornellBox() {
+    SceneBuilder builder;
+    // The room: five walls of two triangles each, on the planes 0 and 4 (open towards -z).
+    std::vector<Vec3> room = {{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {4, 4, 0}, {0, 0, 4}, {4, 0, 4}, {0, 4, 4}, {4, 4, 4}};
+    builder.addMesh(room, {{0, 1, 5}, {0, 5, 4}, {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2},
+                           {1, 3, 7}, {1, 7, 5}, {4, 5, 7}, {4, 7, 6}});
+    addBox(builder, {0.5f, 0.0f, 1.0f}, {1.5f, 2.0f, 2.0f});
+    addBox(builder, {2.25f, 0.0f, 2.5f}, {3.25f, 1.0f, 3.5f});
+    builder.addSphere({3.0f, 0.5f, 1.0f}, 0.5f);
+    builder.addSphere({1.0f, 2.5f, 1.5f}, 0.5f);
+    return TestScene{"cornell-box", "", builder.take(), false, Vec3(0.0f)};
+}
+
+TestScene bunnyOrStandIn(const std::string& modelsDir) {
+    std::string path = modelsDir + "/bunny.gltf";
+    std::string why;
+    if (std::filesystem::exists(path)) {
+        try {
+            Scene scene = loadGltf(path);
+            return TestScene{"bunny", "", std::move(scene), false, Vec3(0.0f)};
+        } catch (const std::exception& e) {
+            why = e.what();
+        }
+    } else {
+        why = path + " does not exist (run make models)";
+    }
+    // A closed, bumpy sphere of 5120 triangles with bunny-like triangle counts per leaf.
+    Mesh mesh = subdividedIcosahedron(4);
+    for (Vec3& p : mesh.positions)
+        p *= 1.0f + 0.15f * std::sin(7.0f * p.x) * std::sin(5.0f * p.y + 1.0f) * std::sin(3.0f * p.z + 2.0f);
+    SceneBuilder builder;
+    builder.addMesh(mesh.positions, mesh.indices);
+    return TestScene{"blob", "graded on a procedural closed mesh instead of the bunny: " + why, builder.take(), true,
+                     Vec3(0.05f, 0.02f, -0.03f)};
+}
+
+std::vector<TestScene> hitSetScenes(const std::string& modelsDir) {
+    std::vector<TestScene> scenes;
+    scenes.push_back(icosphere(2));
+    scenes.push_back(triangleSoup(2000, 1));
+    scenes.push_back(cornellBox());
+    scenes.push_back(bunnyOrStandIn(modelsDir));
+    return scenes;
+}
+
+}  // namespace rtlab::grader
