@@ -15,8 +15,8 @@ struct ConvergenceOptions {
     std::string scene = "bunny";
     std::string modelsDir;
     std::string accelerator = "bvh-buckets:12";
-    int width = 192;
-    int height = 192;
+    int width = 128;
+    int height = 128;
     int referenceSpp = 1024;  // 32 x 32 strata
     std::vector<int> spp{1, 2, 4, 8, 16, 32, 64, 128, 256};
     int threads = 2;

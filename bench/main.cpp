@@ -54,7 +54,7 @@ int runBench(const Options& options) {
         throughput.modelsDir = options.modelsDir;
         if (options.quick) {
             throughput.rayStride = 16;
-            throughput.protocol = TraceProtocol{0.0, 1, 1};
+            throughput.protocol = TraceProtocol{0.0, 1, 1, 0.0};
             throughput.buildRepeats = 1;
         }
         std::vector<ThroughputRecord> records = runThroughput(throughput);

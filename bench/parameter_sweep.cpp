@@ -44,7 +44,7 @@ ParameterSweepOptions quickParameterSweep(ParameterSweepOptions options) {
     options.maxLeaf = {2, 4};
     options.fullSweep = false;
     options.rayStride = 16;
-    options.protocol = TraceProtocol{0.0, 1, 1};
+    options.protocol = TraceProtocol{0.0, 1, 1, 0.0};
     options.buildRepeats = 1;
     return options;
 }

@@ -18,7 +18,7 @@ struct ParameterSweepOptions {
     std::vector<int> maxLeaf{1, 2, 4, 8, 16};
     bool fullSweep = true;     // also bvh-sah (every split) for each maxLeaf
     size_t rayStride = 4;      // trace every 4th ray of each set
-    TraceProtocol protocol{0.3, 3, 20};
+    TraceProtocol protocol{0.3, 3, 20, 5.0};
     int buildRepeats = 3;
 };
 

@@ -120,7 +120,7 @@ std::vector<ThroughputRecord> runThroughput(const ThroughputOptions& options) {
                 // set and one pass, and its mismatches are counted on that subset.
                 bool brute = label == "rtlab:brute";
                 size_t stride = brute ? kBruteForceRayStride : 1;
-                TraceProtocol protocol = brute ? TraceProtocol{0.0, 1, 1} : options.protocol;
+                TraceProtocol protocol = brute ? TraceProtocol{0.0, 1, 1, 0.0} : options.protocol;
                 for (SceneRays& set : raySets) {
                     std::vector<BenchRay> rays;
                     std::vector<TraceResult> reference;

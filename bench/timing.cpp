@@ -84,7 +84,8 @@ TraceTiming timeTrace(const BenchSystem& system, const std::vector<BenchRay>& ra
     TraceTiming timing;
     tracePass(system, rays, threads, results, timing.stats);  // warm-up
     double total = 0.0, best = 0.0;
-    while (timing.passes < protocol.maxPasses && (timing.passes < protocol.minPasses || total < protocol.minSeconds)) {
+    while (timing.passes < protocol.maxPasses && (timing.passes < protocol.minPasses || total < protocol.minSeconds) &&
+           !(timing.passes >= 1 && total >= protocol.maxSeconds)) {
         double seconds = tracePass(system, rays, threads, results, timing.stats);
         total += seconds;
         ++timing.passes;

@@ -4,7 +4,8 @@
 //  * Trace: the whole ray set per pass, handed out in chunks of 4,096 consecutive rays through
 //    an atomic counter to T threads (T = 1 runs on the calling thread), FTZ/DAZ set in every
 //    tracing thread; one warm-up pass, then passes until >= minSeconds in total and
-//    >= minPasses (at most maxPasses); the best pass counts.
+//    >= minPasses (at most maxPasses, and no more once maxSeconds have passed); the best pass
+//    counts.
 #pragma once
 
 #include "bench/bench_system.h"
@@ -20,6 +21,9 @@ struct TraceProtocol {
     double minSeconds = 1.0;
     int minPasses = 3;
     int maxPasses = 50;
+    // Our addition for the slowest rows (median splits on the engine, brute force): once the
+    // passes add up to this many seconds, one timed pass is enough.
+    double maxSeconds = 10.0;
 };
 
 struct TraceTiming {

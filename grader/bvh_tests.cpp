@@ -240,12 +240,10 @@ TestGroup hitSetGroup(const BvhConfig& config, std::shared_ptr<PreparedScene> sc
         size_t wrongHits = 0;
         if (ordered) wrongHits += judgeClosestHits(*scene, *ordered, closest, tag);
         if (occluded) wrongHits += judgeOcclusion(*scene, *occluded, anyHit, tag);
-        if (config.recursive) {
-            TestResult recursive = result("recursive-hits");
+        TestResult recursive = result("recursive-hits");
+        if (config.recursive)
             if (auto answers = readQueries(run.phases[3], scene->rays.rays.size(), recursive))
                 wrongHits += judgeClosestHits(*scene, *answers, recursive, tag);
-            results.push_back(std::move(recursive));
-        }
 
         if (structureValid) {
             double cost = graderSahCost(*bvh);
@@ -296,7 +294,8 @@ TestGroup hitSetGroup(const BvhConfig& config, std::shared_ptr<PreparedScene> sc
             fail(sah, "the structure is invalid, so its SAH cost means nothing");
             fail(efficiency, sah.reason);
         }
-        for (TestResult* r : {&structure, &sah, &closest, &anyHit, &efficiency}) results.push_back(std::move(*r));
+        for (TestResult* r : {&structure, &sah, &closest, &recursive, &anyHit, &efficiency})
+            if (r != &recursive || config.recursive) results.push_back(std::move(*r));
     };
     return group;
 }

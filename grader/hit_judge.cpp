@@ -87,16 +87,20 @@ std::string expectation(const Candidates& all, double tRequired) {
 
 std::string HitJudge::judgeClosest(size_t index, const Ray& ray, bool mustHit, const HitAnswer& answer) {
     const auto& all = candidates(index, ray);
-    double tRequired = std::numeric_limits<double>::infinity();
-    double requiredTolerance = 0.0;
+    // The answer may not lie beyond a robust hit; a ray known to cross a surface must hit
+    // something, whichever of the (near-)tied primitives at the crossing it reports.
+    double tRobust = std::numeric_limits<double>::infinity(), robustTolerance = 0.0;
     for (const Candidate& c : all)
-        if ((c.robust || mustHit) && c.t < tRequired) {
-            tRequired = c.t;
-            requiredTolerance = c.tolerance;
+        if (c.robust && c.t < tRobust) {
+            tRobust = c.t;
+            robustTolerance = c.tolerance;
         }
+    double tExpected = tRobust;
+    if (mustHit)
+        for (const Candidate& c : all) tExpected = std::min(tExpected, c.t);
     if (answer.prim == kNoHit) {
-        if (!std::isfinite(tRequired)) return "";
-        return expectation(all, tRequired) + ", got a miss";
+        if (!std::isfinite(tExpected)) return "";
+        return expectation(all, tExpected) + ", got a miss";
     }
     std::string got = ", got prim " + std::to_string(answer.prim) + " at t=" + formatT(answer.t);
     auto match = std::find_if(all.begin(), all.end(), [&](const Candidate& c) {
@@ -104,10 +108,10 @@ std::string HitJudge::judgeClosest(size_t index, const Ray& ray, bool mustHit, c
     });
     if (match == all.end()) {
         std::string why = answer.prim < scene_.primitiveCount() ? " (that primitive is not hit there)" : " (no such primitive)";
-        return expectation(all, tRequired) + got + why;
+        return expectation(all, tExpected) + got + why;
     }
-    if (double(answer.t) > tRequired + requiredTolerance + match->tolerance)
-        return expectation(all, tRequired) + got + " (a closer hit was missed)";
+    if (double(answer.t) > tRobust + robustTolerance + match->tolerance)
+        return expectation(all, tRobust) + got + " (a closer hit was missed)";
     if (!(answer.t > ray.tMin && answer.t <= ray.tMax)) return "a hit must satisfy tMin < t <= tMax" + got;
     return "";
 }

@@ -26,7 +26,7 @@ public:
     // Reads directory/bvh.json if present; problems (missing file, manifest mismatch) are kept
     // and reported by every test that needs a value.
     static ReferenceData load(const std::string& directory);
-    // An empty set that collects values and is written by save().
+    // The current values, to be updated with record() and written by save().
     static ReferenceData forWriting(const std::string& directory);
 
     bool writing() const { return writing_; }

@@ -6,12 +6,14 @@
 #include "framework/interface/a1_bvh.h"
 #include "framework/interface/a2_sah.h"
 #include "framework/oracle/oracle.h"
+#include "framework/scene/gltf_loader.h"
 #include "tests/icosphere_fixture.h"
 
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <map>
 #include <set>
@@ -363,7 +365,8 @@ BvhOptions optionsOf(const AcceleratorSpec& spec) {
 
 // Builds every accelerator over the scene and compares every ray with the oracle; shadow rays
 // must agree with brute force, which uses the same float primitive tests.
-void checkAllAccelerators(const Scene& scene, RaySet& set) {
+void checkAllAccelerators(const Scene& scene, RaySet& set,
+                          const std::vector<AcceleratorCase>& accelerators = allAccelerators()) {
     computeExpected(set, scene);
     PrimitiveSet prims(scene);
     Geometry geometry{scene, glm::length(DVec3(scene.bounds().diagonal()))};
@@ -375,7 +378,7 @@ void checkAllAccelerators(const Scene& scene, RaySet& set) {
     TraversalStats bruteStats;
     for (const Ray& ray : set.rays) bruteOccluded.push_back(brute->occluded(ray, bruteStats));
 
-    for (const AcceleratorCase& c : allAccelerators()) {
+    for (const AcceleratorCase& c : accelerators) {
         CAPTURE(c.label());
         auto accel = makeAccelerator(c.spec);
         accel->build(prims);
@@ -452,6 +455,44 @@ TEST_CASE("every accelerator matches the oracle on a flat grid: flat boxes, edge
     checkAllAccelerators(scene, set);
     for (size_t i = 0; i < set.rays.size(); ++i)
         if (set.rays[i].direction.z == 0.0f) CHECK_FALSE(set.expected[i].hit);
+}
+
+// Camera rays (one per pixel of a small image) plus random rays, on a real scene.
+void addCameraRays(RaySet& set, const Scene& scene, int width, int height) {
+    if (scene.cameras.empty()) return;
+    for (int j = 0; j < height; ++j)
+        for (int i = 0; i < width; ++i) addRay(set, scene.cameras.front().generateRay(i, j, width, height));
+}
+
+TEST_CASE("every accelerator matches the oracle on the committed scenes") {
+    for (const char* name : {"cornell-box", "spheres", "smooth-mesh", "light-behind", "multi-light"}) {
+        CAPTURE(name);
+        Scene scene = loadGltf(std::string(RTLAB_SOURCE_DIR) + "/scenes/" + name + ".gltf");
+        RaySet set;
+        addCameraRays(set, scene, 32, 24);
+        addRandomRays(set, scene, 500, 10);
+        checkAllAccelerators(scene, set);
+    }
+}
+
+TEST_CASE("every accelerator matches the oracle on the bunny and the engine (when fetched)") {
+    // scripts/fetch-models puts them into the build tree (`make test` does that first).
+    std::vector<AcceleratorCase> accelerators;
+    for (const AcceleratorCase& c : allAccelerators())
+        if (c.spec.maxLeaf == 4) accelerators.push_back(c);
+    for (const char* file : {"bunny.gltf", "engine.glb"}) {
+        std::string path = std::string(RTLAB_BINARY_DIR) + "/models/" + file;
+        if (!std::filesystem::exists(path)) {
+            MESSAGE(path << " is missing (run scripts/fetch-models " << RTLAB_BINARY_DIR << "/models): skipped");
+            continue;
+        }
+        CAPTURE(file);
+        Scene scene = loadGltf(path);
+        RaySet set;
+        addCameraRays(set, scene, 16, 12);
+        addRandomRays(set, scene, 200, 11);
+        checkAllAccelerators(scene, set, accelerators);
+    }
 }
 
 TEST_CASE("degenerate inputs build, terminate and hit correctly on every accelerator") {

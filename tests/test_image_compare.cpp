@@ -98,8 +98,8 @@ TEST_CASE("image compare: the heat map colours pixels by their error band") {
     CHECK(one.b > 0.9f);  // blue
     CHECK(two.g > 0.8f);  // green
     CHECK(two.r < 0.1f);
-    CHECK(many.r > 0.9f);  // orange: 16-255 codes
-    CHECK(many.g == doctest::Approx(0.5f).epsilon(0.02));
+    CHECK(many.r > 0.9f);  // red: 256 codes or more
+    CHECK(many.g < 0.1f);
 }
 
 static int runCli(std::vector<std::string> arguments) {

@@ -70,6 +70,23 @@ TEST_CASE("16-bit PNG: code = floor(clip(v,0,1)*65535 + 0.5), read back unchange
     CHECK(back.pixels[5] == doctest::Approx(26214.0 / 65535.0).epsilon(1e-7));
 }
 
+TEST_CASE("16-bit codes next to k + 0.5 round as POV-Ray's float IntEncode, not as exact arithmetic") {
+    // POV-Ray computes floor(v * 65535.0f + 0.5f) in float; volatile forces each float rounding
+    // here (no fused multiply-add).
+    Pcg32 random(11, 2);
+    int differFromExact = 0;
+    for (int i = 0; i < 20000; ++i) {
+        uint32_t k = random.next() % 65535;
+        float v = static_cast<float>((k + 0.5 + (random.uniform() - 0.5) * 1e-5) / 65535.0);
+        volatile float scaled = v * 65535.0f;
+        volatile float rounded = scaled + 0.5f;
+        auto povCode = static_cast<uint16_t>(std::floor(rounded));
+        CHECK(encodeLinear16(v) == povCode);
+        differFromExact += povCode != static_cast<uint16_t>(std::floor(static_cast<double>(v) * 65535.0 + 0.5));
+    }
+    CHECK(differFromExact > 0);  // the cases really sit on the boundary
+}
+
 TEST_CASE("EXR keeps values above 1 and infinity exactly (float32)") {
     std::vector<float> values{0.1f, 3.75f, 1e6f, 0.0f, kInfinity, 1.0f / 3.0f};
     fs::path path = outputDir() / "range.exr";

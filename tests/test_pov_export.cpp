@@ -6,6 +6,7 @@
 #include "framework/pov/pov_exporter.h"
 #include "framework/pov/pov_reference.h"
 #include "framework/pov/pov_trace.h"
+#include "framework/pov/povray_process.h"
 #include "framework/render/image_compare.h"
 #include "framework/render/image_io.h"
 #include "framework/render/renderer.h"
@@ -158,20 +159,32 @@ TEST_CASE("pov trace: POV-Ray's trace() agrees with the oracle on 300 rays") {
     CHECK(comparison.maxNormalError < 1e-9);
 }
 
-TEST_CASE("pov trace: a scene with nothing to trace is refused, a failed POV-Ray run names its log") {
+TEST_CASE("pov export: bad input is one line; a failed POV-Ray run names its log, which is kept") {
     Scene empty;
     empty.sourcePath = "empty (test)";
     std::vector<OracleRay> rays{OracleRay{{0, 0, 0}, {0, 0, 1}}};
     CHECK_THROWS_AS(traceWithPovray(empty, rays), Error);
 
     Scene scene = litQuad();
-    scene.materials.clear();  // a primitive naming a missing material
+    scene.materials.pop_back();  // the right triangle names a missing material
+    CHECK_THROWS_WITH_AS(exportPovScene(scene, scene.cameras.front(), 8, 6),
+                         doctest::Contains("names material 1 of 1"), Error);
+
+    TemporaryDirectory work("rtlab-test-broken-pov");
+    std::ofstream(work.path() / "broken.pov") << "#version 3.7;\nsphere { <0,0,0>, }\n";
+    std::string message;
     try {
-        renderPovReference(scene, scene.cameras.front(), 8, 6, outputDir() / "never.png");
-        FAIL("expected an error");
+        runPovrayOrThrow({"-Ibroken.pov", "+W8", "+H6", "-D"}, work, "rendering broken.pov");
     } catch (const Error& e) {
-        CHECK(std::string(e.what()).find("material") != std::string::npos);
+        message = e.what();
     }
+    MESSAGE(message);
+    CHECK(message.find("povray failed") != std::string::npos);
+    CHECK(message.find('\n') == std::string::npos);
+    fs::path log = work.path() / "povray.log";
+    CHECK(message.find(log.string()) != std::string::npos);
+    CHECK(fs::exists(log));
+    fs::remove_all(work.path());  // kept for the user; this test cleans up after itself
 }
 
 // A floor lit by a light 1 above it, and a small card just below the light that shadows the

@@ -136,7 +136,7 @@ TEST_CASE("rtlab render: image and AOV files, sizes from the camera's aspect") {
     Image linear = readImage(exr.string());
     // The PNG holds the same radiance, quantised.
     for (size_t i = 0; i < image.pixels.size(); ++i)
-        CHECK(image.pixels[i] * 65535.0f == encodeLinear16(linear.pixels[i]));
+        CHECK(std::lround(image.pixels[i] * 65535.0f) == encodeLinear16(linear.pixels[i]));
 }
 
 TEST_CASE("rtlab render: bad outputs fail before rendering, with exit code 1") {

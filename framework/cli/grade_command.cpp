@@ -44,7 +44,17 @@ void grade(GradeFlags& flags) {
         throw Error("--root " + g.sourceDir + " is not the rtlab repository (no grader/ folder)");
     for (const std::string& a : g.assignments)
         if (a != "a0" && a != "a1" && a != "a2") throw Error("--assignment " + a + " is not an assignment (valid: a0, a1, a2)");
-    if (g.workDir.empty()) g.workDir = (fs::temp_directory_path() / ("rtlab-grade-" + std::to_string(getpid()))).string();
+    // Renders and heat maps go to a temporary folder unless --work names one; the HTML report
+    // keeps copies.
+    bool temporaryWork = g.workDir.empty();
+    if (temporaryWork) g.workDir = (fs::temp_directory_path() / ("rtlab-grade-" + std::to_string(getpid()))).string();
+    struct RemoveOnExit {
+        std::string path;
+        ~RemoveOnExit() {
+            std::error_code ignored;
+            if (!path.empty()) fs::remove_all(path, ignored);
+        }
+    } cleanup{temporaryWork ? g.workDir : ""};
     g.progress = !flags.quiet;
 
     if (!flags.submission.empty() || !flags.submissions.empty()) {

@@ -12,7 +12,9 @@ namespace rtlab {
 
 // Builds the BVH over prims (any order; the function may reorder them). For each node: compute
 // its NodeInfo, call splitNode (below); 0 means "make a leaf", k > 0 means the first k
-// primitives of the (reordered) span go to the first child, the rest to the second.
+// primitives of the (reordered) span go to the first child, the rest to the second. An
+// interior node's axis is maxComponentIndex(second.bounds.centre() - first.bounds.centre()).
+// A leaf holds at most 65535 primitives: a bigger one is split with splitEqualCounts instead.
 Bvh buildBvh(std::vector<BuildPrimitive> prims, const BvhOptions& options);
 
 // --- Split heuristics (assignments/a1_bvh/bvh_splits.cpp) -------------------------------------

@@ -85,14 +85,18 @@ void runPovrayOrThrow(const std::vector<std::string>& arguments, TemporaryDirect
 }
 
 std::string povrayVersion() {
-    TemporaryDirectory work("rtlab-povray-version");
-    fs::path logPath = work.path() / "version.txt";
-    runPovray({"--version"}, work.path(), logPath);
-    std::ifstream in(logPath);
-    std::string line;
-    while (std::getline(in, line))
-        if (line.rfind("POV-Ray ", 0) == 0) return line;
-    throw Error("povray --version printed no 'POV-Ray <version>' line");
+    // Asked once per process: the installed POV-Ray does not change while we run.
+    static const std::string version = [] {
+        TemporaryDirectory work("rtlab-povray-version");
+        fs::path logPath = work.path() / "version.txt";
+        runPovray({"--version"}, work.path(), logPath);
+        std::ifstream in(logPath);
+        std::string line;
+        while (std::getline(in, line))
+            if (line.rfind("POV-Ray ", 0) == 0) return line;
+        throw Error("povray --version printed no 'POV-Ray <version>' line");
+    }();
+    return version;
 }
 
 }  // namespace rtlab

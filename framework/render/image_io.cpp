@@ -56,9 +56,14 @@ void writeWithOiio(const std::string& path, const Image& image, OIIO::TypeDesc t
 }  // namespace
 
 uint16_t encodeLinear16(float value) {
-    // POV-Ray 3.7 base/image/encoding.h IntEncode, float arithmetic included; NaN -> 0.
+    // POV-Ray 3.7's IntEncode (base/image/encoding.h): floor(clip(v) * 65535.0f + 0.5f) with
+    // both steps rounded to float; NaN -> 0. Each step is done exactly in double and rounded to
+    // float once, which is what the float operation gives, and no fused multiply-add can
+    // change it. Near k + 0.5 this differs from exact arithmetic, as POV-Ray does.
     float clipped = std::isnan(value) ? 0.0f : std::clamp(value, 0.0f, 1.0f);
-    return static_cast<uint16_t>(std::floor(clipped * 65535.0f + 0.5f));
+    auto scaled = static_cast<float>(static_cast<double>(clipped) * 65535.0);
+    auto rounded = static_cast<float>(static_cast<double>(scaled) + 0.5);
+    return static_cast<uint16_t>(std::floor(rounded));
 }
 
 uint8_t encodeSrgb8(float value, float exposure) {
