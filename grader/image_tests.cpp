@@ -1,8 +1,10 @@
-// Images: every scene in scenes/ rendered with the student's BVH (a0 intersections, a1 median
-// build and ordered traversal) and compared with its POV-Ray reference in scenes/refs/.
-// A scene without a reference scores 0 with the reason "no reference", never a silent pass.
+// Images: every scene in scenes/ (and every referenced model, such as the bunny) rendered with
+// the student's BVH (a0 intersections, a1 median build and ordered traversal) and compared with
+// its POV-Ray reference in scenes/refs/. A scene without a reference, or whose reference is
+// older than the scene, scores 0 with that reason, never a silent pass.
 #include "framework/accel/accelerator.h"
 #include "framework/core/error.h"
+#include "framework/core/sha256.h"
 #include "framework/render/image_compare.h"
 #include "framework/render/image_io.h"
 #include "framework/render/renderer.h"
@@ -12,7 +14,10 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <map>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 namespace rtlab::grader {
 namespace {
@@ -36,6 +41,7 @@ struct ImageJob {
     std::string name;
     Scene scene;
     std::unique_ptr<PrimitiveSet> primitives;
+    Camera camera;
     Image reference;
     std::string referencePath;
 };
@@ -55,7 +61,7 @@ TestGroup renderGroup(std::shared_ptr<ImageJob> job, const std::string& workDir)
                                     settings.height = job->reference.height;
                                     settings.threads = 2;
                                     settings.progress = false;
-                                    RenderResult result = Renderer(job->scene, job->scene.cameras.front(), *accelerator).render(settings);
+                                    RenderResult result = Renderer(job->scene, job->camera, *accelerator).render(settings);
                                     out.put<int32_t>(result.colour.width);
                                     out.put<int32_t>(result.colour.height);
                                     out.put<int32_t>(result.colour.channels);
@@ -120,27 +126,48 @@ TestGroup unavailableGroup(const std::string& name, const std::string& reason) {
 }  // namespace
 
 std::vector<TestGroup> imageGroups(GradingContext& context) {
+    // The references and what they were made from (scenes/refs/manifest.json, written by
+    // rtlab refs); every scene in scenes/ is graded, with or without a reference.
+    const fs::path root(context.sourceDir), refs = root / "scenes" / "refs";
+    nlohmann::json manifest = nlohmann::json::object();
+    if (fs::exists(refs / "manifest.json")) {
+        try {
+            manifest = nlohmann::json::parse(std::ifstream(refs / "manifest.json")).at("references");
+        } catch (const nlohmann::json::exception&) {
+            manifest = nlohmann::json::object();
+        }
+    }
+    std::map<std::string, fs::path> scenes;
+    if (fs::is_directory(root / "scenes"))
+        for (const auto& entry : fs::directory_iterator(root / "scenes"))
+            if (entry.path().extension() == ".gltf" || entry.path().extension() == ".glb") scenes[entry.path().stem().string()] = entry.path();
+    // Referenced models outside scenes/ (the bunny) are looked up in the models folder.
+    for (const auto& [name, entry] : manifest.items()) {
+        fs::path scene = entry.value("scene", "");
+        scenes.try_emplace(name, fs::exists(root / scene) ? root / scene : fs::path(context.modelsDir) / scene.filename());
+    }
+
     std::vector<TestGroup> groups;
-    fs::path scenes = fs::path(context.sourceDir) / "scenes";
-    if (!fs::is_directory(scenes)) return groups;
-    std::vector<fs::path> files;
-    for (const auto& entry : fs::directory_iterator(scenes))
-        if (entry.path().extension() == ".gltf" || entry.path().extension() == ".glb") files.push_back(entry.path());
-    std::sort(files.begin(), files.end());
-    for (const fs::path& file : files) {
-        std::string name = file.stem().string();
-        fs::path reference = scenes / "refs" / (name + ".png");
-        if (!fs::exists(reference)) {
-            groups.push_back(unavailableGroup(name, "no reference: " + reference.string() + " does not exist (an instructor runs rtlab refs)"));
+    for (const auto& [name, file] : scenes) {
+        if (!manifest.contains(name) || !fs::exists(refs / manifest[name].value("image", ""))) {
+            groups.push_back(unavailableGroup(name, "no reference: scenes/refs has none for " + file.filename().string() +
+                                                        " (an instructor runs rtlab refs)"));
             continue;
         }
+        const nlohmann::json& entry = manifest[name];
         auto job = std::make_shared<ImageJob>();
         job->name = name;
-        job->referencePath = reference.string();
+        job->referencePath = (refs / entry.value("image", "")).string();
         try {
+            if (!fs::exists(file)) throw Error(file.string() + " does not exist (run make models)");
+            const nlohmann::json inputs = entry.value("inputs", nlohmann::json::object());
+            for (const auto& [input, digest] : inputs.items())
+                if (input == entry.value("scene", "") && sha256OfFile(file.string()) != digest.get<std::string>())
+                    throw Error("stale reference: " + file.string() + " changed after " + job->referencePath +
+                                " was rendered (an instructor runs rtlab refs)");
             job->scene = loadGltf(file.string());
-            if (job->scene.cameras.empty()) throw Error(file.string() + " has no camera");
-            job->reference = readImage(reference.string());
+            job->camera = job->scene.camera(entry.value("camera", "camera"));
+            job->reference = readImage(job->referencePath);
         } catch (const std::exception& e) {
             groups.push_back(unavailableGroup(name, e.what()));
             continue;

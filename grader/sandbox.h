@@ -17,7 +17,7 @@
 namespace rtlab::grader {
 
 struct SandboxLimits {
-    double wallSeconds = 10.0;  // per phase
+    double wallSeconds = 5.0;  // per phase
     int cpuSeconds = 30;        // per child, all threads together
     int memoryMiB = 512;        // on top of what the grader itself has mapped
 };

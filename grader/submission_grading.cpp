@@ -145,7 +145,8 @@ size_t gradeSubmissions(const std::string& submissionsDir, const SubmissionOptio
         csv << csvField(folders[i].filename().string()) << "," << reports[i].score() << "," << reports[i].maxScore();
         for (const std::string& c : columns) {
             auto it = std::find_if(reports[i].tests.begin(), reports[i].tests.end(), [&](const TestResult& t) { return t.name == c; });
-            csv << "," << (it == reports[i].tests.end() ? std::string() : std::to_string(it->score));
+            csv << ",";
+            if (it != reports[i].tests.end()) csv << it->score;
         }
         csv << "\n";
     }

@@ -36,6 +36,24 @@ def axis_angle_quaternion(axis, degrees):
     return [x * math.sin(half), y * math.sin(half), z * math.sin(half), math.cos(half)]
 
 
+def quaternion_product(a, b):
+    """The rotation b followed by a, both glTF (x, y, z, w)."""
+    ax, ay, az, aw = a
+    bx, by, bz, bw = b
+    return [aw * bx + ax * bw + ay * bz - az * by,
+            aw * by - ax * bz + ay * bw + az * bx,
+            aw * bz + ax * by - ay * bx + az * bw,
+            aw * bw - ax * bx - ay * by - az * bz]
+
+
+def look_at_quaternion(position, target):
+    """The rotation that turns a glTF camera (looking down -Z, +Y up) towards target, no roll."""
+    dx, dy, dz = (target[i] - position[i] for i in range(3))
+    yaw = math.degrees(math.atan2(-dx, -dz))
+    pitch = math.degrees(math.atan2(dy, math.hypot(dx, dz)))
+    return quaternion_product(axis_angle_quaternion((0, 1, 0), yaw), axis_angle_quaternion((1, 0, 0), pitch))
+
+
 def quad(corner, edge_u, edge_v):
     """Two triangles of the parallelogram corner, corner+u, corner+u+v, corner+v, facing u x v."""
     p = [corner,

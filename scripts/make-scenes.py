@@ -17,7 +17,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gltf_builder import GltfBuilder, axis_angle_quaternion, box, f32v, quad, uv_sphere  # noqa: E402
+from gltf_builder import GltfBuilder, box, f32v, look_at_quaternion, quad, uv_sphere  # noqa: E402
 
 GENERATOR = "rtlab scripts/make-scenes.py"
 LUMENS_PER_WATT = 683.0
@@ -54,10 +54,10 @@ class SceneWriter:
         self.g.add_point_light(name, candela, colour, translation=f32v(position))
         self.lights.append((f32v(position), [c * candela / LUMENS_PER_WATT for c in colour]))
 
-    def camera(self, position, pitch_degrees, yfov_degrees):
-        """A camera looking down -Z, tilted by `pitch_degrees` about +X (negative = down)."""
+    def camera(self, position, target, yfov_degrees):
+        """A camera at `position` looking at `target`, +Y up."""
         self.g.add_camera("camera", math.radians(yfov_degrees), ASPECT, translation=f32v(position),
-                          rotation=axis_angle_quaternion((1, 0, 0), pitch_degrees))
+                          rotation=look_at_quaternion(position, target))
 
     def max_radiance(self):
         """Upper bound of the rendered radiance: every light unshadowed, plus emission."""
@@ -171,7 +171,7 @@ def cornell_box():
     add_box(s, "short box", [0.4375, 0, 0.4375], [0.5, 0.5, 0.5], -18, white)
     add_box(s, "tall box", [-0.4375, 0, -0.4375], [0.5, 1.0, 0.5], 20, white)
     s.light("ceiling light", [0, 1.375, 0.25], 1000.0, (1.0, 0.9, 0.75))
-    s.camera([0, 1, 3.75], 0, 40)
+    s.camera([0, 1, 3.75], [0, 1, 0], 40)
     return s
 
 
@@ -190,7 +190,7 @@ def spheres():
     s.sphere("green", [0.5, 0.3125, 1.5], 0.3125, green)
     s.sphere("glowing", [-0.625, 0.25, 1.875], 0.25, glow)
     s.light("key light", [3, 5, 4], 25000.0)
-    s.camera([0, 2.5, 7], -14, 40)
+    s.camera([0, 2.5, 7], [0, 0.75, 0], 40)
     return s
 
 
@@ -203,7 +203,7 @@ def smooth_mesh():
     s.mesh("smooth sphere", [[p[0] - 1.25, p[1] + 1, p[2]] for p in positions], triangles, clay, normals)
     s.mesh("faceted sphere", [[p[0] + 1.25, p[1] + 1, p[2]] for p in positions], triangles, clay)
     s.light("key light", [2, 4, 3], 20000.0)
-    s.camera([0, 1.75, 5.5], -10, 40)
+    s.camera([0, 1.75, 5.5], [0, 0.75, 0], 40)
     return s
 
 
@@ -213,10 +213,10 @@ def light_behind():
     wall = s.material("wall", (0.75, 0.7, 0.6))
     crate = s.material("crate", (0.3, 0.5, 0.8))
     ground(s, 4, floor)
-    add_quad(s, "wall", [-1.5, 0, 0], [3, 0, 0], [0, 2, 0], wall)  # faces the camera
+    add_quad(s, "wall", [-1.5, 0, 0], [3, 0, 0], [0, 1.25, 0], wall)  # faces the camera
     add_box(s, "box", [2.25, 0, 1.25], [0.75, 0.75, 0.75], 30, crate)
-    s.light("hidden light", [0, 1.25, -1], 2000.0)
-    s.camera([0, 2, 6], -12, 45)
+    s.light("hidden light", [0, 3, -1.5], 21000.0)  # behind the wall, above its top
+    s.camera([2, 3, 7], [0, 0.5, 0], 45)
     return s
 
 
@@ -231,7 +231,7 @@ def multi_light():
     s.light("near warm", [-1.5, 1.5, 1.75], 2500.0, (1.0, 0.55, 0.3))
     s.light("middle green", [3, 3, -1], 10000.0, (0.35, 1.0, 0.45))
     s.light("far blue", [-2, 7, -6], 55000.0, (0.35, 0.55, 1.0))
-    s.camera([0, 3, 8], -18, 40)
+    s.camera([0, 3, 8], [0, 0.5, 0], 40)
     return s
 
 

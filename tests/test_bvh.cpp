@@ -318,18 +318,19 @@ void checkStructure(const StructureView& view, const PrimitiveSet& prims, const 
     REQUIRE(!view.nodes.empty());
     std::vector<int> timesInLeaf(prims.size(), 0);
     std::vector<int> timesReached(view.nodes.size(), 0);
+    int tooDeep = 0, emptyLeaves = 0, badChildren = 0, childOutside = 0, loose = 0, bigLeaves = 0;
     std::vector<std::pair<uint32_t, int>> pending = {{0, 0}};
     while (!pending.empty()) {
         auto [index, depth] = pending.back();
         pending.pop_back();
         REQUIRE(index < view.nodes.size());
-        ++timesReached[index];
+        if (++timesReached[index] > 1) continue;
         const StructureNode& node = view.nodes[index];
-        CHECK(depth <= kMaxBvhDepth - 1);
+        tooDeep += depth > kMaxBvhDepth - 1;
         Bounds3f tight;
         if (node.childCount == 0) {
-            REQUIRE(node.primCount >= 1);
             REQUIRE(node.firstPrim + node.primCount <= view.primIndices.size());
+            emptyLeaves += node.primCount == 0;
             Bounds3f centroids;
             for (uint32_t i = node.firstPrim; i < node.firstPrim + node.primCount; ++i) {
                 uint32_t prim = view.primIndices[i];
@@ -339,21 +340,27 @@ void checkStructure(const StructureView& view, const PrimitiveSet& prims, const 
                 centroids.extend(prims.centroid(prim));
             }
             bool mayBeBig = centroids.lower == centroids.upper || depth == kMaxBvhDepth - 1;
-            if (!mayBeBig) CHECK(node.primCount <= static_cast<uint32_t>(options.maxLeaf));
+            bigLeaves += !mayBeBig && node.primCount > static_cast<uint32_t>(options.maxLeaf);
         } else {
-            REQUIRE(node.childCount == 2);
+            badChildren += node.childCount != 2;
             for (uint32_t c = 0; c < node.childCount; ++c) {
                 uint32_t child = view.children[node.firstChild + c];
                 REQUIRE(child < view.nodes.size());
-                CHECK(node.bounds.contains(view.nodes[child].bounds));
+                childOutside += !node.bounds.contains(view.nodes[child].bounds);
                 tight.extend(view.nodes[child].bounds);
                 pending.push_back({child, depth + 1});
             }
         }
-        CHECK(node.bounds == tight);
+        loose += !(node.bounds == tight);
     }
-    CHECK(std::all_of(timesReached.begin(), timesReached.end(), [](int n) { return n == 1; }));
-    CHECK(std::all_of(timesInLeaf.begin(), timesInLeaf.end(), [](int n) { return n == 1; }));
+    CHECK(tooDeep == 0);
+    CHECK(emptyLeaves == 0);
+    CHECK(badChildren == 0);
+    CHECK(childOutside == 0);
+    CHECK(loose == 0);
+    CHECK(bigLeaves == 0);
+    CHECK(std::count(timesReached.begin(), timesReached.end(), 1) == static_cast<long>(view.nodes.size()));
+    CHECK(std::count(timesInLeaf.begin(), timesInLeaf.end(), 1) == static_cast<long>(prims.size()));
     CHECK(view.primIndices.size() == prims.size());
 }
 

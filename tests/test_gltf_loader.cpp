@@ -7,6 +7,10 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 using namespace rtlab;
@@ -15,6 +19,11 @@ namespace {
 
 std::string dataFile(const std::string& name) { return std::string(RTLAB_SOURCE_DIR) + "/tests/data/" + name; }
 std::string sceneFile(const std::string& name) { return std::string(RTLAB_SOURCE_DIR) + "/scenes/" + name; }
+
+std::string fileBytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
 
 bool hasFeature(const Scene& scene, const std::string& feature) {
     return std::find(scene.featuresUsed.begin(), scene.featuresUsed.end(), feature) != scene.featuresUsed.end();
@@ -193,4 +202,18 @@ TEST_CASE("glTF loader: the committed scenes") {
     Scene cornell = loadGltf(sceneFile("cornell-box.gltf"));
     checkVec(cornell.lights[0].intensity, Vec3(1.0f, 0.9f, 0.75f) * (1000.0f / 683.0f));
     checkVec(cornell.lights[0].position, {0.0f, 1.375f, 0.25f});
+}
+
+TEST_CASE("glTF scenes: the committed files are exactly what scripts/make-scenes.py writes") {
+    std::string out = std::string(RTLAB_BINARY_DIR) + "/tests/make-scenes-check";
+    std::filesystem::remove_all(out);
+    std::string command = "python3 '" + std::string(RTLAB_SOURCE_DIR) + "/scripts/make-scenes.py' '" + out + "' > /dev/null";
+    REQUIRE(std::system(command.c_str()) == 0);
+    int compared = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(out)) {
+        CAPTURE(entry.path().filename().string());
+        CHECK(fileBytes(entry.path().string()) == fileBytes(sceneFile(entry.path().filename().string())));
+        ++compared;
+    }
+    CHECK(compared == 5);
 }

@@ -61,7 +61,7 @@ TEST_CASE("rtlab refs: render, skip when up to date, re-render and --check when 
     const ReferenceEntry& entry = manifest.entries["light-behind"];
     CHECK(entry.scene == "scenes/light-behind.gltf");
     CHECK(entry.inputs.size() == 1);
-    CHECK(entry.settings == "+W64 +H48 -A -D +FN16 File_Gamma=1.0");
+    CHECK(entry.settings == "+W64 +H48 -A -D +FN16 File_Gamma=1.0 +WT1");
     CHECK(entry.povray.rfind("POV-Ray 3.7", 0) == 0);
     CHECK(readImage(image.string()).width == 64);
 

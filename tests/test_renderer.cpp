@@ -8,6 +8,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -280,4 +281,34 @@ TEST_CASE("renderer: image sizes out of range are errors") {
     addSquareZ(scene, 0, 0, -3.0f, 1.0f, addMaterial(scene, Vec3(0.5f)));
     CHECK_THROWS_AS(renderScene(scene, axisCamera(), 0, 10), Error);
     CHECK_THROWS_AS(renderScene(scene, axisCamera(), 10, -1), Error);
+}
+
+TEST_CASE("renderer: AOV images (depth scaled for integer files, cost ramp, primitive colours)") {
+    Scene scene;
+    addSquareZ(scene, 0, 0, -3.0f, 1.0f, addMaterial(scene, Vec3(0.5f)));  // leaves the corners empty
+    const int size = 24;
+    RenderResult result = renderScene(scene, axisCamera(), size, size, 2, {Aov::Depth, Aov::Primitive, Aov::Cost});
+    const AovBuffers& aovs = result.aovs;
+    CHECK(aovs.depth.at(0, 0, 0) == kInfinity);  // a miss
+    CHECK(aovs.primitive[0] == kNoHit);
+
+    Image depthFloat = aovImage(Aov::Depth, aovs, size, size, false);
+    Image depthInteger = aovImage(Aov::Depth, aovs, size, size, true);
+    CHECK(depthFloat.pixels == aovs.depth.pixels);
+    CHECK(depthInteger.at(0, 0, 0) == 0.0f);
+    float largest = *std::max_element(depthInteger.pixels.begin(), depthInteger.pixels.end());
+    CHECK(largest == 1.0f);
+
+    // Brute force tests both triangles for every ray: the cost is 2 everywhere, the ramp's top.
+    CHECK(maxCost(aovs) == 2);
+    Image cost = aovImage(Aov::Cost, aovs, size, size, true);
+    CHECK(cost.rgb(0, 0) == heatColour(1.0f));
+    CHECK(heatColour(0.0f) != heatColour(1.0f));
+
+    Image prim = aovImage(Aov::Primitive, aovs, size, size, true);
+    CHECK(prim.rgb(0, 0) == Vec3(0.0f));
+    CHECK(prim.rgb(size / 2 + 1, size / 2 - 1) == primitiveColour(aovs.primitive[(size / 2 - 1) * size + size / 2 + 1]));
+    CHECK(primitiveColour(0) != primitiveColour(1));
+    CHECK(parseAov("prim") == Aov::Primitive);
+    CHECK_THROWS_AS(parseAov("albedo"), Error);
 }

@@ -31,17 +31,28 @@ std::string percent(uint64_t count, uint64_t total) {
     return out.str();
 }
 
+// Codes as whole numbers when both images are 16-bit, else with 4 significant digits.
+std::string codes(double value, bool whole) {
+    std::ostringstream out;
+    if (whole)
+        out << std::fixed << std::setprecision(0);
+    else
+        out << std::setprecision(4);
+    out << value << " codes";
+    return out.str();
+}
+
 void printComparison(const CompareOptions& options, const ImageComparison& c) {
     std::ostream& out = std::cout;
     out << "compare " << options.imageA << " vs " << options.imageB << ": " << c.width << "x" << c.height
         << ", " << c.channels << " channels\n";
     out << std::setprecision(4);
-    out << "  mean abs error  " << c.meanError << "  (" << c.meanCodes() << " codes)\n";
-    out << "  max abs error   " << c.maxError << "  (" << c.maxCodes() << " codes) at pixel (" << c.maxX << ", "
+    out << "  mean abs error  " << c.meanError << "  (" << codes(c.meanCodes(), false) << ")\n";
+    out << "  max abs error   " << c.maxError << "  (" << codes(c.maxCodes(), c.wholeCodes) << ") at pixel (" << c.maxX << ", "
         << c.maxY << ")\n";
     out << "  RMSE            " << c.rmse << "\n";
     out << "  PSNR            " << c.psnr << " dB\n";
-    out << "  median pixel    " << c.medianPixelCodes << " codes\n";
+    out << "  median pixel    " << codes(c.medianPixelCodes, c.wholeCodes) << "\n";
     const auto& n = c.pixelsByCodes;
     out << "  pixels by error 0: " << n[0] << " (" << percent(n[0], c.pixelCount) << "), 1: " << n[1] << ", 2: "
         << n[2] << ", >2: " << n[3] << "  (codes; " << percent(n[0] + n[1] + n[2], c.pixelCount)

@@ -1,9 +1,12 @@
-// rtlab refs [SCENE...] [--scenes DIR] [--check] [--hits] [--force]: POV-Ray references
-// (docs/verification.md). Without --check/--hits, renders DIR/refs/<name>.png for every
+// rtlab refs [SCENE...] [--scenes DIR] [--force] [--check] [--hits] [--parity]: POV-Ray
+// references (docs/verification.md). Without --check/--hits/--parity, renders DIR/refs/<name>.png for every
 // DIR/*.gltf, every scene the manifest already lists and every SCENE given, skipping those whose
 // inputs (scene hash, exporter, POV-Ray version, settings) are unchanged. --check re-renders
 // into a temporary folder and compares with the committed images; --hits traces a ray set per
-// scene with POV-Ray's trace() and compares it with the oracle. Exit status 1 on any mismatch.
+// scene with POV-Ray's trace() and compares it with the oracle; --parity renders every
+// reference's scene with our renderer (the implementation this executable links) and checks the
+// parity target. Exit status 1 on any mismatch.
+#include "framework/accel/accelerator.h"
 #include "framework/cli/commands.h"
 #include "framework/core/error.h"
 #include "framework/core/sha256.h"
@@ -13,6 +16,8 @@
 #include "framework/pov/povray_process.h"
 #include "framework/pov/reference_manifest.h"
 #include "framework/render/image_compare.h"
+#include "framework/render/image_io.h"
+#include "framework/render/renderer.h"
 #include "framework/scene/gltf_loader.h"
 
 #include <algorithm>
@@ -36,6 +41,8 @@ struct RefsOptions {
     bool force = false;
     bool check = false;
     bool hits = false;
+    bool parity = false;
+    std::string parityDir;
     size_t rays = 3000;
     uint64_t seed = 1;
 };
@@ -53,10 +60,12 @@ struct RefsLayout {
     fs::path root;
 
     explicit RefsLayout(const std::string& dir)
-        : scenesDir(dir), refsDir(scenesDir / "refs"), manifestPath(refsDir / "manifest.json"),
-          root(fs::absolute(scenesDir).lexically_normal().parent_path()) {
+        : scenesDir(dir), refsDir(scenesDir / "refs"), manifestPath(refsDir / "manifest.json") {
         if (!fs::is_directory(scenesDir))
             throw Error(dir + ": no such scenes folder (run from the repository root or pass --scenes)");
+        fs::path absolute = fs::absolute(scenesDir).lexically_normal();
+        if (absolute.filename().empty()) absolute = absolute.parent_path();  // "scenes/"
+        root = absolute.parent_path();
     }
 };
 
@@ -168,30 +177,39 @@ void renderReferences(const RefsOptions& options, const RefsLayout& layout, Refe
     }
 }
 
+// The manifest entry of a scene whose reference is current; otherwise prints why not and
+// returns nullptr.
+const ReferenceEntry* currentEntry(const SceneJob& job, const RefsLayout& layout, const ReferenceManifest& manifest) {
+    auto found = manifest.entries.find(job.name);
+    if (found == manifest.entries.end()) {
+        line(job.name) << "FAIL: no reference in " << layout.manifestPath.string() << " (run rtlab refs)\n";
+        return nullptr;
+    }
+    const ReferenceEntry& entry = found->second;
+    if (hashSceneInputs(job.scene, layout.root) != entry.inputs) {
+        line(job.name) << "FAIL: " << entry.scene << " changed since its reference was rendered (run rtlab refs)\n";
+        return nullptr;
+    }
+    if (!fs::exists(layout.refsDir / entry.image)) {
+        line(job.name) << "FAIL: " << (layout.refsDir / entry.image).string() << " is missing (run rtlab refs)\n";
+        return nullptr;
+    }
+    return &entry;
+}
+
 // Returns the names of the references that do not match.
 std::vector<std::string> checkReferences(const RefsLayout& layout, const ReferenceManifest& manifest,
                                          const std::vector<SceneJob>& jobs, const std::string& povray) {
     std::vector<std::string> failed;
     TemporaryDirectory work("rtlab-refs-check");
     for (const SceneJob& job : jobs) {
-        auto found = manifest.entries.find(job.name);
-        if (found == manifest.entries.end()) {
-            line(job.name) << "FAIL: no reference in " << layout.manifestPath.string() << " (run rtlab refs)\n";
+        const ReferenceEntry* current = currentEntry(job, layout, manifest);
+        if (!current) {
             failed.push_back(job.name);
             continue;
         }
-        const ReferenceEntry& entry = found->second;
-        if (hashSceneInputs(job.scene, layout.root) != entry.inputs) {
-            line(job.name) << "FAIL: " << entry.scene << " changed since its reference was rendered (run rtlab refs)\n";
-            failed.push_back(job.name);
-            continue;
-        }
+        const ReferenceEntry& entry = *current;
         fs::path committed = layout.refsDir / entry.image;
-        if (!fs::exists(committed)) {
-            line(job.name) << "FAIL: " << committed.string() << " is missing\n";
-            failed.push_back(job.name);
-            continue;
-        }
         Scene scene = loadGltf(job.scene.string());
         fs::path fresh = work.path() / entry.image;
         renderPovReference(scene, scene.camera(entry.camera), entry.width, entry.height, fresh);
@@ -227,6 +245,54 @@ std::vector<std::string> checkHitSets(const RefsOptions& options, const std::vec
     return failed;
 }
 
+// The parity target of docs/verification.md: median pixel error 0 codes and at least 99.9 %
+// of pixels within 2 codes of POV-Ray.
+constexpr double kParityCodes = 2.0;
+constexpr double kParityShare = 0.999;
+
+std::vector<std::string> checkParity(const RefsOptions& options, const RefsLayout& layout,
+                                     const ReferenceManifest& manifest, const std::vector<SceneJob>& jobs) {
+    std::vector<std::string> failed;
+    TemporaryDirectory work("rtlab-refs-parity");
+    fs::path outputDir = options.parityDir.empty() ? work.path() : fs::path(options.parityDir);
+    fs::create_directories(outputDir);
+    for (const SceneJob& job : jobs) {
+        const ReferenceEntry* current = currentEntry(job, layout, manifest);
+        if (!current) {
+            failed.push_back(job.name);
+            continue;
+        }
+        const ReferenceEntry& entry = *current;
+        Scene scene = loadGltf(job.scene.string());
+        PrimitiveSet primitives(scene);
+        auto accelerator = makeAccelerator(AcceleratorSpec{});
+        accelerator->build(primitives);
+        RenderSettings settings;
+        settings.width = entry.width;
+        settings.height = entry.height;
+        settings.progress = false;
+        RenderResult result = Renderer(scene, scene.camera(entry.camera), *accelerator).render(settings);
+        fs::path render = outputDir / (job.name + ".rtlab.png");
+        writeImage(render.string(), result.colour);
+        fs::path reference = layout.refsDir / entry.image;
+        ImageComparison c = compareImages(render.string(), reference.string(), kParityCodes);
+        double within = 1.0 - c.shareOverThreshold();
+        bool meets = c.medianPixelCodes == 0.0 && within >= kParityShare;
+        line(job.name) << (meets ? "meets target: " : "FAIL: ") << "median " << c.medianPixelCodes
+                       << " codes, exact " << fixed(100.0 * c.pixelsByCodes[0] / c.pixelCount, 3) << " %, within 2 codes "
+                       << fixed(100.0 * within, 3) << " % (" << c.pixelsOverThreshold << " of " << c.pixelCount
+                       << " beyond), max " << c.maxCodes() << " codes";
+        if (!options.parityDir.empty()) {
+            fs::path heat = outputDir / (job.name + ".heat.png");
+            writeErrorHeatMap(render.string(), reference.string(), heat.string());
+            std::cout << ", heat map " << heat.string();
+        }
+        std::cout << "\n";
+        if (!meets) failed.push_back(job.name);
+    }
+    return failed;
+}
+
 void refs(const RefsOptions& options) {
     RefsLayout layout(options.scenesDir);
     ReferenceManifest manifest = ReferenceManifest::load(layout.manifestPath);
@@ -235,7 +301,7 @@ void refs(const RefsOptions& options) {
               << "\n";
     std::vector<SceneJob> jobs = collectScenes(options, layout, manifest);
 
-    if (!options.check && !options.hits) {
+    if (!options.check && !options.hits && !options.parity) {
         renderReferences(options, layout, manifest, jobs, povray);
         return;
     }
@@ -247,6 +313,11 @@ void refs(const RefsOptions& options) {
     if (options.hits) {
         std::cout << "POV-Ray trace() against the oracle (seed " << options.seed << "):\n";
         for (const std::string& name : checkHitSets(options, jobs)) failed.push_back("hits:" + name);
+    }
+    if (options.parity) {
+        std::cout << "our renderer against the references (median 0 codes, >= 99.9 % within 2 codes):\n";
+        for (const std::string& name : checkParity(options, layout, manifest, jobs))
+            failed.push_back("parity:" + name);
     }
     if (!failed.empty()) {
         std::string names;
@@ -260,7 +331,8 @@ void refs(const RefsOptions& options) {
 void addRefsCommand(CLI::App& app) {
     auto options = std::make_shared<RefsOptions>();
     CLI::App* command = app.add_subcommand(
-        "refs", "Render POV-Ray references for the scenes (only what changed), check them, or check trace() hit sets");
+        "refs", "Render POV-Ray references for the scenes (only what changed); check them, trace() hit sets, "
+               "or our renders against them (docs/verification.md)");
     command->add_option("scene", options->scenePaths,
                         "Scene files (default: DIR/*.gltf and every scene the manifest lists)");
     command->add_option("--scenes", options->scenesDir, "Scenes folder; references go to DIR/refs")
@@ -272,6 +344,11 @@ void addRefsCommand(CLI::App& app) {
                       "Re-render into a temporary folder and compare with the committed references (exit 1 on mismatch)");
     command->add_flag("--hits", options->hits,
                       "Trace a ray set per scene with POV-Ray's trace() and compare with the oracle (exit 1 on mismatch)");
+    command->add_flag("--parity", options->parity,
+                      "Render every reference's scene with this executable's renderer and check the parity "
+                      "target: median 0 codes, >= 99.9 % of pixels within 2 codes (exit 1 when missed)");
+    command->add_option("--parity-dir", options->parityDir,
+                        "With --parity: keep our renders and write heat maps (NAME.rtlab.png, NAME.heat.png) here");
     command->add_option("--rays", options->rays, "Rays per scene for --hits")->capture_default_str()->check(CLI::Range(1, 10000000));
     command->add_option("--seed", options->seed, "Seed of the --hits ray sets")->capture_default_str();
     command->callback([options] { refs(*options); });

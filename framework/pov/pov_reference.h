@@ -1,6 +1,7 @@
 // A POV-Ray reference render: the exported scene rendered headless with one ray per pixel
 // centre (-A), no display (-D), 16-bit PNG (+FN16) with linear values (File_Gamma=1.0), so
-// code = floor(clip(v, 0, 1) * 65535 + 0.5), the same encoding as our 16-bit linear PNG.
+// code = floor(clip(v, 0, 1) * 65535 + 0.5), the same encoding as our 16-bit linear PNG, on
+// one thread (+WT1) so that the image is reproducible.
 #pragma once
 
 #include "framework/scene/scene.h"
@@ -12,7 +13,7 @@
 namespace rtlab {
 
 // Everything on povray's command line that shapes the image, "+W.. +H.. -A -D +FN16
-// File_Gamma=1.0" (recorded in the reference manifest).
+// File_Gamma=1.0 +WT1" (recorded in the reference manifest).
 std::string povReferenceSettings(int width, int height);
 
 // Exports the scene, renders it with povray in a temporary folder and writes the PNG to

@@ -132,7 +132,11 @@ public:
     }
 
 private:
-    [[noreturn]] void fail(const std::string& problem) const { throw Error(path_ + ": " + problem); }
+    // Names inside the problem come from the file: keep the message on one line whatever they hold.
+    [[noreturn]] void fail(std::string problem) const {
+        std::replace_if(problem.begin(), problem.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+        throw Error(path_ + ": " + problem);
+    }
 
     void note(const std::string& feature) {
         if (std::find(scene_.featuresUsed.begin(), scene_.featuresUsed.end(), feature) ==
