@@ -7,6 +7,7 @@
 #   make bench                                benchmarks against Embree (docs/performance.md)
 #   make gradescope                           the Gradescope autograder zip
 
+MAKEFLAGS += --no-print-directory
 IMPL ?= assignments
 JOBS ?= $(shell nproc)
 RTLAB := build/$(if $(filter solutions,$(IMPL)),rtlab-solution,rtlab)
@@ -35,7 +36,7 @@ test-sanitize: deps models
 	@ctest --preset sanitize -j $(JOBS) -L sanitize
 
 bench: build models
-	@build/rtlab-solution bench --out build/bench
+	@build/rtlab-solution bench --out build/bench-results
 
 gradescope: build
 	@scripts/make-gradescope build/gradescope.zip

@@ -86,6 +86,7 @@ SubmissionBuild buildSubmission(const std::string& submissionDir, const std::str
     SubmissionBuild build;
     fs::create_directories(workDir);
     std::string compile = quote(toolchain.at("compiler").get<std::string>());
+    appendArgument(compile, "-I" + (fs::path(workDir) / "src").string());
     for (const auto& flag : toolchain.at("compile_flags")) appendArgument(compile, flag.get<std::string>());
     for (const auto& dir : toolchain.at("include_dirs")) appendArgument(compile, "-I" + dir.get<std::string>());
 
@@ -109,6 +110,20 @@ SubmissionBuild buildSubmission(const std::string& submissionDir, const std::str
                     build.fromSubmission.push_back(entry.path().string());
                     sources.push_back({entry.path(), fs::path("assignments") / name / entry.path().filename()});
                 }
+        }
+    }
+
+    // Headers of the submission sit next to its copied sources, and src/ comes first on the
+    // include path, so both "helper.h" and "assignments/a1_bvh/helper.h" find them.
+    for (const auto& assignment : fs::directory_iterator(stubs)) {
+        fs::path name = assignment.path().filename();
+        fs::path target = fs::path(workDir) / "src" / "assignments" / name;
+        fs::create_directories(target);
+        for (const fs::path& folder : {fs::path(submissionDir) / "assignments" / name, fs::path(submissionDir) / name, fs::path(submissionDir)}) {
+            if (!fs::is_directory(folder)) continue;
+            for (const auto& entry : fs::directory_iterator(folder))
+                if (entry.path().extension() == ".h" || entry.path().extension() == ".hpp")
+                    fs::copy_file(entry.path(), target / entry.path().filename(), fs::copy_options::overwrite_existing);
         }
     }
 

@@ -171,7 +171,7 @@ def cornell_box():
     add_box(s, "short box", [0.4375, 0, 0.4375], [0.5, 0.5, 0.5], -18, white)
     add_box(s, "tall box", [-0.4375, 0, -0.4375], [0.5, 1.0, 0.5], 20, white)
     s.light("ceiling light", [0, 1.375, 0.25], 1000.0, (1.0, 0.9, 0.75))
-    s.camera([0, 1, 3.75], [0, 1, 0], 40)
+    s.camera([0, 0.9375, 3.75], [0, 0.9375, 0], 40)  # off-centre: no pixel centre on a corner line
     return s
 
 
@@ -203,7 +203,7 @@ def smooth_mesh():
     s.mesh("smooth sphere", [[p[0] - 1.25, p[1] + 1, p[2]] for p in positions], triangles, clay, normals)
     s.mesh("faceted sphere", [[p[0] + 1.25, p[1] + 1, p[2]] for p in positions], triangles, clay)
     s.light("key light", [2, 4, 3], 20000.0)
-    s.camera([0, 1.75, 5.5], [0, 0.75, 0], 40)
+    s.camera([0, 2, 6.5], [0, 0.875, 0], 40)
     return s
 
 
