@@ -30,9 +30,10 @@ grade: build models
 test: build models
 	@ctest --preset release -j $(JOBS)
 
-test-sanitize: deps models
+test-sanitize: deps
 	@cmake --preset sanitize > build-configure-sanitize.log || (cat build-configure-sanitize.log; exit 1)
 	@cmake --build --preset sanitize -j $(JOBS)
+	@scripts/fetch-models build-sanitize/models
 	@ctest --preset sanitize -j $(JOBS) -L sanitize
 
 bench: build models
