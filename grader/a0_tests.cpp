@@ -33,6 +33,33 @@ bool closeTo(double value, double expected, double relative) {
     return std::abs(value - expected) <= relative * std::max(1.0, std::abs(expected));
 }
 
+// The verdicts of a truth table, case by case: counts the passes and keeps one line per failure
+// (case id, ray, what went wrong); the first failure becomes the test's one-line reason.
+class CaseTally {
+public:
+    explicit CaseTally(TestResult& result) : result_(result) {}
+
+    // An empty problem means the case passed.
+    void record(const std::string& id, const Ray& ray, const std::string& problem) {
+        ++total_;
+        if (problem.empty()) {
+            ++passed_;
+            return;
+        }
+        std::string line = id + " " + describeRay(ray) + ": " + problem;
+        result_.details.push_back(line);
+        if (firstFailure_.empty()) firstFailure_ = line;
+    }
+
+    void finish() { setFromCounts(result_, passed_, total_, firstFailure_); }
+
+private:
+    TestResult& result_;
+    size_t passed_ = 0;
+    size_t total_ = 0;
+    std::string firstFailure_;
+};
+
 // --- Truth tables ---------------------------------------------------------------------------
 
 ChildPhase boxTablePhase(std::shared_ptr<const std::vector<BoxCase>> cases) {
@@ -49,23 +76,16 @@ ChildPhase boxTablePhase(std::shared_ptr<const std::vector<BoxCase>> cases) {
 void scoreBoxTable(const std::vector<BoxCase>& cases, const PhaseOutcome& outcome, TestResult& result) {
     if (failedPhaseResult(outcome, result)) return;
     ByteReader in(outcome.data);
-    size_t passed = 0;
-    std::string first;
+    CaseTally tally(result);
     for (const BoxCase& c : cases) {
         bool hit = in.get<uint8_t>() != 0;
         float enter = in.get<float>();
         std::string problem;
         if (hit != c.hit) problem = std::string("expected ") + (c.hit ? "hit" : "miss") + ", got " + (hit ? "hit" : "miss");
         else if (hit && !closeTo(enter, c.enter, 1e-5)) problem = "expected tEnter " + formatFloat(c.enter) + ", got " + formatFloat(enter);
-        if (problem.empty()) {
-            ++passed;
-            continue;
-        }
-        std::string line = c.id + " " + describeRay(c.ray) + ": " + problem;
-        result.details.push_back(line);
-        if (first.empty()) first = line;
+        tally.record(c.id, c.ray, problem);
     }
-    setFromCounts(result, passed, cases.size(), first);
+    tally.finish();
 }
 
 ChildPhase triangleTablePhase(std::shared_ptr<const std::vector<TriangleCase>> cases) {
@@ -83,8 +103,7 @@ ChildPhase triangleTablePhase(std::shared_ptr<const std::vector<TriangleCase>> c
 void scoreTriangleTable(const std::vector<TriangleCase>& cases, const PhaseOutcome& outcome, TestResult& result) {
     if (failedPhaseResult(outcome, result)) return;
     ByteReader in(outcome.data);
-    size_t passed = 0;
-    std::string first;
+    CaseTally tally(result);
     for (const TriangleCase& c : cases) {
         bool anyHit = false;
         std::string problem;
@@ -98,15 +117,9 @@ void scoreTriangleTable(const std::vector<TriangleCase>& cases, const PhaseOutco
                 problem = "expected t=" + formatFloat(c.t) + ", got t=" + formatFloat(t) + " on triangle " + std::to_string(k);
         }
         if (c.hit && !anyHit) problem = "expected a hit at t=" + formatFloat(c.t) + ", got a miss";
-        if (problem.empty()) {
-            ++passed;
-            continue;
-        }
-        std::string line = c.id + " " + describeRay(c.ray) + ": " + problem;
-        result.details.push_back(line);
-        if (first.empty()) first = line;
+        tally.record(c.id, c.ray, problem);
     }
-    setFromCounts(result, passed, cases.size(), first);
+    tally.finish();
 }
 
 ChildPhase sphereTablePhase(std::shared_ptr<const std::vector<SphereCase>> cases) {
@@ -123,23 +136,16 @@ ChildPhase sphereTablePhase(std::shared_ptr<const std::vector<SphereCase>> cases
 void scoreSphereTable(const std::vector<SphereCase>& cases, const PhaseOutcome& outcome, TestResult& result) {
     if (failedPhaseResult(outcome, result)) return;
     ByteReader in(outcome.data);
-    size_t passed = 0;
-    std::string first;
+    CaseTally tally(result);
     for (const SphereCase& c : cases) {
         bool hit = in.get<uint8_t>() != 0;
         float t = in.get<float>();
         std::string problem;
         if (hit != c.hit) problem = std::string("expected ") + (c.hit ? "a hit at t=" + formatFloat(c.t) : "a miss") + ", got " + (hit ? "a hit at t=" + formatFloat(t) : "a miss");
         else if (hit && !closeTo(t, c.t, c.tolerance)) problem = "expected t=" + formatFloat(c.t) + ", got t=" + formatFloat(t);
-        if (problem.empty()) {
-            ++passed;
-            continue;
-        }
-        std::string line = c.id + " " + describeRay(c.ray) + ": " + problem;
-        result.details.push_back(line);
-        if (first.empty()) first = line;
+        tally.record(c.id, c.ray, problem);
     }
-    setFromCounts(result, passed, cases.size(), first);
+    tally.finish();
 }
 
 template <typename Case>

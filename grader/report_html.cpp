@@ -4,6 +4,7 @@
 // next to index.html.
 #include "framework/core/error.h"
 #include "grader/grading_report.h"
+#include "grader/markup_escape.h"
 
 #include <cctype>
 #include <cstdio>
@@ -15,20 +16,6 @@ namespace rtlab::grader {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string escapeHtml(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        default: out += c;
-        }
-    }
-    return out;
-}
 
 std::string anchor(const std::string& name) {
     std::string a;
@@ -51,36 +38,36 @@ void writeHtmlReport(const GradingReport& report, const std::string& directory) 
     char total[128];
     std::snprintf(total, sizeof total, "%.2f of %.2f points", report.score(), report.maxScore());
     html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>rtlab grading report</title><style>" << kStyle
-         << "</style></head><body>\n<h1>rtlab grading report</h1>\n<p>" << escapeHtml(report.implementation) << ", seed "
+         << "</style></head><body>\n<h1>rtlab grading report</h1>\n<p>" << escapeMarkup(report.implementation) << ", seed "
          << report.seed << ": <b>" << total << "</b> in " << report.seconds << " s.</p>\n<table><tr><th>test</th><th>status</th>"
          << "<th>points</th><th>reason</th></tr>\n";
     for (const TestResult& t : report.tests) {
         std::string status = testStatusName(t.status);
         std::snprintf(total, sizeof total, "%.2f/%.2f", t.score, t.maxScore);
-        html << "<tr><td><a href=\"#" << anchor(t.name) << "\">" << escapeHtml(t.name) << "</a></td><td class=\"" << anchor(status)
-             << "\">" << status << "</td><td>" << total << "</td><td>" << escapeHtml(t.reason) << "</td></tr>\n";
+        html << "<tr><td><a href=\"#" << anchor(t.name) << "\">" << escapeMarkup(t.name) << "</a></td><td class=\"" << anchor(status)
+             << "\">" << status << "</td><td>" << total << "</td><td>" << escapeMarkup(t.reason) << "</td></tr>\n";
     }
     html << "</table>\n";
     int imageNumber = 0;
     for (const TestResult& t : report.tests) {
         std::string status = testStatusName(t.status);
-        html << "<h2 id=\"" << anchor(t.name) << "\">" << escapeHtml(t.name) << " <span class=\"" << anchor(status) << "\">" << status
+        html << "<h2 id=\"" << anchor(t.name) << "\">" << escapeMarkup(t.name) << " <span class=\"" << anchor(status) << "\">" << status
              << "</span></h2>\n";
         std::string output = testOutput(t);
-        if (!output.empty()) html << "<pre>" << escapeHtml(output) << "</pre>\n";
+        if (!output.empty()) html << "<pre>" << escapeMarkup(output) << "</pre>\n";
         if (t.images.empty()) continue;
         html << "<div class=\"images\">\n";
         for (const ReportImage& image : t.images) {
             std::string file = "images/" + std::to_string(++imageNumber) + "-" + fs::path(image.path).filename().string();
             std::error_code error;
             fs::copy_file(image.path, fs::path(directory) / file, fs::copy_options::overwrite_existing, error);
-            html << "<figure><img src=\"" << escapeHtml(file) << "\" alt=\"" << escapeHtml(image.label) << "\"><figcaption>"
-                 << escapeHtml(image.label) << "</figcaption></figure>\n";
+            html << "<figure><img src=\"" << escapeMarkup(file) << "\" alt=\"" << escapeMarkup(image.label) << "\"><figcaption>"
+                 << escapeMarkup(image.label) << "</figcaption></figure>\n";
         }
         html << "</div>\n";
     }
     if (!report.studentOutput.empty())
-        html << "<h2>What your code printed</h2>\n<pre>" << escapeHtml(report.studentOutput) << "</pre>\n";
+        html << "<h2>What your code printed</h2>\n<pre>" << escapeMarkup(report.studentOutput) << "</pre>\n";
     html << "</body></html>\n";
     std::string path = (fs::path(directory) / "index.html").string();
     std::ofstream out(path, std::ios::binary);

@@ -2,6 +2,7 @@
 // dashboard never shows an untouched stub as green.
 #include "framework/core/error.h"
 #include "grader/grading_report.h"
+#include "grader/markup_escape.h"
 
 #include <filesystem>
 #include <fstream>
@@ -9,25 +10,6 @@
 #include <sstream>
 
 namespace rtlab::grader {
-namespace {
-
-std::string escapeXml(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        default:
-            // Control characters are not allowed in XML 1.0 (student output may contain them).
-            if (static_cast<unsigned char>(c) >= 0x20 || c == '\n' || c == '\t') out += c;
-        }
-    }
-    return out;
-}
-
-}  // namespace
 
 void writeJunitReport(const GradingReport& report, const std::string& path) {
     std::map<std::string, std::vector<const TestResult*>> suites;
@@ -37,15 +19,15 @@ void writeJunitReport(const GradingReport& report, const std::string& path) {
     for (const auto& [assignment, tests] : suites) {
         size_t failures = 0;
         for (const TestResult* t : tests) failures += t->status != TestStatus::Passed;
-        xml << "  <testsuite name=\"" << escapeXml(assignment) << "\" tests=\"" << tests.size() << "\" failures=\"" << failures << "\">\n";
+        xml << "  <testsuite name=\"" << escapeMarkup(assignment) << "\" tests=\"" << tests.size() << "\" failures=\"" << failures << "\">\n";
         for (const TestResult* t : tests) {
-            xml << "    <testcase classname=\"" << escapeXml(assignment) << "\" name=\"" << escapeXml(t->name) << "\" time=\""
+            xml << "    <testcase classname=\"" << escapeMarkup(assignment) << "\" name=\"" << escapeMarkup(t->name) << "\" time=\""
                 << t->seconds << "\">\n";
             xml << "      <properties><property name=\"score\" value=\"" << t->score << "\"/><property name=\"max_score\" value=\""
                 << t->maxScore << "\"/></properties>\n";
             if (t->status != TestStatus::Passed)
-                xml << "      <failure type=\"" << testStatusName(t->status) << "\" message=\"" << escapeXml(t->reason) << "\">"
-                    << escapeXml(testOutput(*t)) << "</failure>\n";
+                xml << "      <failure type=\"" << testStatusName(t->status) << "\" message=\"" << escapeMarkup(t->reason) << "\">"
+                    << escapeMarkup(testOutput(*t)) << "</failure>\n";
             xml << "    </testcase>\n";
         }
         xml << "  </testsuite>\n";

@@ -1,6 +1,7 @@
 // rtlab render SCENE -o OUT: renders a glTF scene with the chosen accelerator
 // (docs/rendering.md) and prints one summary line: time, throughput, work per ray.
 #include "framework/accel/accelerator.h"
+#include "framework/cli/accelerator_options.h"
 #include "framework/cli/commands.h"
 #include "framework/core/error.h"
 #include "framework/render/image_io.h"
@@ -29,7 +30,6 @@ struct RenderOptions {
     int height = 0;  // 0 = derived
     std::string cameraName;
     AcceleratorSpec accelerator;
-    std::string traversal = "ordered";
     int threads = 0;
     bool srgb8 = false;
     float exposure = 0.0f;
@@ -69,7 +69,6 @@ void render(RenderOptions options) {
         checkImageOutput(aovPath(options, aov));
         refuseToOverwriteScene(aovPath(options, aov), options.scenePath);
     }
-    options.accelerator.recursiveTraversal = options.traversal == "recursive";
     auto accelerator = makeAccelerator(options.accelerator);
 
     Scene scene = loadGltf(options.scenePath);
@@ -125,14 +124,8 @@ void addRenderCommand(CLI::App& app) {
     command->add_option("--height", options->height, "Image height in pixels (default from the width and the camera's aspect, else 4:3)")
         ->check(CLI::Range(1, 1 << 15));
     command->add_option("--camera", options->cameraName, "Camera by name (default: the first)");
-    command->add_option("--accel", options->accelerator.name,
-                        "Accelerator: brute, bvh-median, bvh-middle, bvh-equal, bvh-sah, bvh-buckets[:B]")
-        ->capture_default_str();
-    command->add_option("--max-leaf", options->accelerator.maxLeaf, "Largest leaf a BVH may keep unsplit")
-        ->capture_default_str();
-    command->add_option("--traversal", options->traversal, "BVH traversal order")
-        ->check(CLI::IsMember({"ordered", "recursive"}))
-        ->capture_default_str();
+    addAcceleratorOptions(command, options->accelerator,
+                          "Accelerator: brute, bvh-median, bvh-middle, bvh-equal, bvh-sah, bvh-buckets[:B]");
     command->add_option("--threads", options->threads, "Worker threads (0 = one per hardware thread)")
         ->check(CLI::NonNegativeNumber)
         ->capture_default_str();

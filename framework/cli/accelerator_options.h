@@ -1,0 +1,16 @@
+// The accelerator flags that render and hits share: --accel, --max-leaf, --traversal and
+// --sah-axes (docs/conventions.md).
+#pragma once
+
+#include "framework/accel/accelerator.h"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace rtlab::cli {
+
+// Adds the flags to command; each writes straight into spec. accelHelp describes --accel.
+void addAcceleratorOptions(CLI::App* command, AcceleratorSpec& spec, const std::string& accelHelp);
+
+}  // namespace rtlab::cli
