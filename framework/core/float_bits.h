@@ -14,13 +14,14 @@ inline constexpr float kMachineEpsilon = std::numeric_limits<float>::epsilon() *
 // gamma(n) = n u / (1 - n u) bounds the relative error of n successive float operations.
 constexpr float gamma(int n) { return (n * kMachineEpsilon) / (1 - n * kMachineEpsilon); }
 
-// a*b - c*d with about 1.5 ulp error and the exact sign (Kahan's algorithm). Stays exact in sign
-// whether or not the compiler contracts into FMA, which keeps edge functions watertight.
+// a*b - c*d rounded once, with the exact sign. The product of two floats is exact in double
+// (24 + 24 bits fit in 53), so the difference is the exact value rounded once: its sign is
+// right, it is zero only when a*b == c*d, and swapping the pairs negates it exactly. That is
+// what keeps edge functions watertight, and it holds whether or not the compiler fuses
+// multiply-adds (fusing an exact product changes nothing). pbrt-v4 gets the same guarantee in
+// float with Kahan's FMA algorithm; without hardware FMA that algorithm calls libm's fmaf.
 inline float differenceOfProducts(float a, float b, float c, float d) {
-    float cd = c * d;
-    float difference = std::fma(a, b, -cd);
-    float error = std::fma(-c, d, cd);
-    return difference + error;
+    return static_cast<float>(static_cast<double>(a) * b - static_cast<double>(c) * d);
 }
 
 inline float nextFloatUp(float v) {

@@ -22,17 +22,11 @@ bool intersectTriangle(const Ray& ray, float tMax, const Vec3& p0, const Vec3& p
     float bx = b[kx] + sx * b[kz], by = b[ky] + sy * b[kz];
     float cx = c[kx] + sx * c[kz], cy = c[ky] + sy * c[kz];
 
-    // 3. 2D edge functions: exactly antisymmetric between neighbours that share an edge, and
-    //    their sign is exact even if the compiler fuses multiply-adds.
+    // 3. 2D edge functions: exactly antisymmetric between neighbours that share an edge, with
+    //    the exact sign, even if the compiler fuses multiply-adds (differenceOfProducts).
     float e0 = differenceOfProducts(bx, cy, by, cx);  // weight of p0
     float e1 = differenceOfProducts(cx, ay, cy, ax);  // weight of p1
     float e2 = differenceOfProducts(ax, by, ay, bx);  // weight of p2
-    if (e0 == 0.0f || e1 == 0.0f || e2 == 0.0f) {
-        // On an edge (or underflow): float x float is exact in double, so redo it there.
-        e0 = static_cast<float>(double(bx) * cy - double(by) * cx);
-        e1 = static_cast<float>(double(cx) * ay - double(cy) * ax);
-        e2 = static_cast<float>(double(ax) * by - double(ay) * bx);
-    }
     // Edges count: zero is inside. Mixed signs mean the ray passes outside.
     if ((e0 < 0 || e1 < 0 || e2 < 0) && (e0 > 0 || e1 > 0 || e2 > 0)) return false;
     float det = e0 + e1 + e2;
