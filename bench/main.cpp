@@ -23,6 +23,8 @@ namespace {
 struct Options {
     std::vector<std::string> scenes;
     std::vector<std::string> systems;
+    std::vector<std::string> accelerators;  // --accel NAME: the row rtlab:NAME
+    int maxLeaf = 4;
     std::string outDir;
     std::string modelsDir = RTLAB_DEFAULT_MODELS_DIR;
     bool quick = false;
@@ -51,6 +53,10 @@ int runBench(const Options& options) {
         throughput.scenes = options.scenes.empty() ? (options.quick ? std::vector<std::string>{"bunny"} : defaultSceneNames())
                                                    : options.scenes;
         throughput.systems = options.systems;
+        for (const std::string& name : options.accelerators) throughput.systems.push_back("rtlab:" + name);
+        // --accel alone still gets its peer row.
+        if (!options.accelerators.empty() && options.systems.empty()) throughput.systems.push_back("embree:medium");
+        throughput.maxLeaf = options.maxLeaf;
         throughput.modelsDir = options.modelsDir;
         if (options.quick) {
             throughput.rayStride = 16;
@@ -105,6 +111,14 @@ int main(int argc, char** argv) {
     app.add_option("--systems", options.systems, "Only these rows, e.g. rtlab:bvh-buckets:12,embree:high")
         ->delimiter(',')
         ->check(CLI::IsMember(allSystemLabels()));
+    std::vector<std::string> acceleratorNames;
+    for (const std::string& label : allSystemLabels())
+        if (label.starts_with("rtlab:")) acceleratorNames.push_back(label.substr(6));
+    app.add_option("--accel", options.accelerators, "Only this rtlab accelerator (repeatable), as in render and hits")
+        ->check(CLI::IsMember(acceleratorNames));
+    app.add_option("--max-leaf", options.maxLeaf, "Largest leaf of every rtlab BVH row")
+        ->check(CLI::Range(1, 65535))
+        ->capture_default_str();
     app.add_option("--out", options.outDir, "Write results.csv, the other CSVs and the SVG plots here");
     app.add_option("--models", options.modelsDir, "Where scripts/fetch-models put bunny.gltf");
     app.add_flag("--quick", options.quick, "A fast smoke run for CI: every 16th ray, one pass, small images");

@@ -37,11 +37,13 @@ struct SceneRays {
     double embreeMediumMrays[3] = {0, 0, 0};  // by thread count
 };
 
-std::unique_ptr<BenchSystem> makeSystem(const std::string& label, const Scene& scene, const PrimitiveSet& primitives) {
+std::unique_ptr<BenchSystem> makeSystem(const std::string& label, const Scene& scene, const PrimitiveSet& primitives,
+                                        int maxLeaf) {
     if (label == "embree:medium") return std::make_unique<EmbreeSystem>(scene, EmbreeQuality::Medium);
     if (label == "embree:high") return std::make_unique<EmbreeSystem>(scene, EmbreeQuality::High);
     AcceleratorSpec spec;
     spec.name = label.substr(6);  // after "rtlab:"
+    spec.maxLeaf = maxLeaf;
     return std::make_unique<RtlabSystem>(primitives, spec);
 }
 
@@ -107,7 +109,7 @@ std::vector<ThroughputRecord> runThroughput(const ThroughputOptions& options) {
                 skip("skipped: brute force above " + std::to_string(options.bruteForceLimit) + " triangles");
                 continue;
             }
-            std::unique_ptr<BenchSystem> system = makeSystem(label, scene, primitives);
+            std::unique_ptr<BenchSystem> system = makeSystem(label, scene, primitives, options.maxLeaf);
             try {
                 std::cerr << "bench: " << sceneName << " " << label << ": building" << std::flush;
                 double build1 = medianBuildMs(*system, 1, repeats, /*pinToOneCpu=*/true);
