@@ -1,7 +1,5 @@
 #include "bench/rtlab_system.h"
 
-#include "framework/accel/bvh_accelerator.h"
-
 #include <chrono>
 
 namespace rtlab::bench {
@@ -42,10 +40,7 @@ std::optional<double> RtlabSystem::sahCost() const {
 
 double RtlabSystem::bytesPerTriangle() const {
     double triangles = std::max<uint32_t>(primitives_.size(), 1);
-    if (const auto* bvh = dynamic_cast<const BvhAccelerator*>(accelerator_.get()))
-        return static_cast<double>(bvh->bvh().nodes.size() * sizeof(BvhNode) +
-                                   bvh->bvh().primIndices.size() * sizeof(uint32_t)) / triangles;
-    return 0.0;  // brute force keeps nothing beyond the primitive set
+    return static_cast<double>(accelerator_->memoryBytes()) / triangles;
 }
 
 }  // namespace rtlab::bench

@@ -17,10 +17,11 @@ namespace {
 
 constexpr size_t kBruteForceRayStride = 64;
 
-const std::vector<std::string> kRtlabAccelerators{"brute",         "bvh-median",    "bvh-middle",
-                                                  "bvh-equal",     "bvh-sah",       "bvh-buckets:4",
-                                                  "bvh-buckets:8", "bvh-buckets:12", "bvh-buckets:16",
-                                                  "bvh-buckets:32"};
+// The binary BVHs of a1/a2 as students traverse them, then the framework's four-wide
+// traversal of the SAH trees (framework/accel/wide_bvh_accelerator.h).
+const std::vector<std::string> kRtlabAccelerators{
+    "brute",          "bvh-median",     "bvh-middle", "bvh-equal",     "bvh-sah",       "bvh-buckets:4",
+    "bvh-buckets:8",  "bvh-buckets:12", "bvh-buckets:16", "bvh-buckets:32", "bvh4-sah", "bvh4-buckets:12"};
 
 std::vector<BenchRay> benchRays(RayKind kind, const Bounds3f& bounds, size_t stride) {
     std::vector<Ray> rays = makeBenchmarkRays(kind, bounds);

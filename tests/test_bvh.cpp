@@ -305,16 +305,26 @@ std::vector<AcceleratorCase> allAccelerators() {
         spec.sahAllAxes = true;
         cases.push_back({spec});
     }
+    // The framework's four-wide traversal of the same trees.
+    for (const char* name : {"bvh4-median", "bvh4-middle", "bvh4-equal", "bvh4-sah", "bvh4-buckets:12"})
+        for (int maxLeaf : {1, 4, 8}) {
+            AcceleratorSpec spec;
+            spec.name = name;
+            spec.maxLeaf = maxLeaf;
+            cases.push_back({spec});
+        }
     return cases;
 }
 
 // --- Structure invariants -----------------------------------------------------------------------
 
-// Every primitive in exactly one leaf, every node reachable once, no empty child, tight bounds
+// Every primitive in exactly one leaf, every node reachable once, two children per interior node
+// (one to four in a wide tree), no empty child, tight bounds
 // (a node's box is exactly the union of its children's or its primitives' boxes), depth within
 // the traversal stack, and leaves no bigger than maxLeaf unless their centroids coincide or the
 // depth cap forced them.
-void checkStructure(const StructureView& view, const PrimitiveSet& prims, const BvhOptions& options) {
+void checkStructure(const StructureView& view, const PrimitiveSet& prims, const BvhOptions& options,
+                    bool wide = false) {
     REQUIRE(!view.nodes.empty());
     std::vector<int> timesInLeaf(prims.size(), 0);
     std::vector<int> timesReached(view.nodes.size(), 0);
@@ -347,7 +357,7 @@ void checkStructure(const StructureView& view, const PrimitiveSet& prims, const 
             bool mayBeBig = centroids.lower == centroids.upper || depth == kMaxBvhDepth - 1;
             bigLeaves += !mayBeBig && node.primCount > static_cast<uint32_t>(options.maxLeaf);
         } else {
-            badChildren += node.childCount != 2;
+            badChildren += wide ? node.childCount > 4 : node.childCount != 2;
             for (uint32_t c = 0; c < node.childCount; ++c) {
                 uint32_t child = view.children[node.firstChild + c];
                 if (child >= view.nodes.size()) {
@@ -398,7 +408,8 @@ void checkAllAccelerators(const Scene& scene, RaySet& set,
         CAPTURE(c.label());
         auto accel = makeAccelerator(c.spec);
         accel->build(prims);
-        if (c.spec.name != "brute") checkStructure(accel->structure(), prims, optionsOf(c.spec));
+        if (c.spec.name != "brute")
+            checkStructure(accel->structure(), prims, optionsOf(c.spec), c.spec.name.starts_with("bvh4-"));
         TraversalStats stats;
         int wrong = 0, leaks = 0, shadowMismatches = 0;
         std::string firstProblem;

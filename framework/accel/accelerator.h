@@ -24,10 +24,14 @@ public:
     // Any hit in (ray.tMin, ray.tMax]: for shadow rays.
     virtual bool occluded(const Ray& ray, TraversalStats& stats) const = 0;
     virtual StructureView structure() const = 0;
+    // Bytes the structure keeps beyond the primitive set (nodes, index lists, copies).
+    virtual size_t memoryBytes() const = 0;
 };
 
 // Accelerator names accepted by --accel (docs/conventions.md):
 //   brute | bvh-median | bvh-middle | bvh-equal | bvh-sah | bvh-buckets[:B]
+// and the four-wide fast path over the same trees (wide_bvh_accelerator.h):
+//   bvh4-median | bvh4-middle | bvh4-equal | bvh4-sah | bvh4-buckets[:B]
 struct AcceleratorSpec {
     std::string name = "bvh-buckets";
     int maxLeaf = 4;

@@ -12,6 +12,7 @@ public:
     Hit intersect(const Ray& ray, TraversalStats& stats) const override;
     bool occluded(const Ray& ray, TraversalStats& stats) const override;
     StructureView structure() const override;
+    size_t memoryBytes() const override { return 0; }
 
 private:
     const PrimitiveSet* primitives_ = nullptr;

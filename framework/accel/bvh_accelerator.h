@@ -17,6 +17,9 @@ public:
     Hit intersect(const Ray& ray, TraversalStats& stats) const override;
     bool occluded(const Ray& ray, TraversalStats& stats) const override;
     StructureView structure() const override;
+    size_t memoryBytes() const override {
+        return bvh_.nodes.size() * sizeof(BvhNode) + bvh_.primIndices.size() * sizeof(uint32_t);
+    }
 
     const Bvh& bvh() const { return bvh_; }
 

@@ -2,6 +2,7 @@
 #include "framework/accel/accelerator.h"
 #include "framework/accel/brute_force.h"
 #include "framework/accel/bvh_accelerator.h"
+#include "framework/accel/wide_bvh_accelerator.h"
 #include "framework/core/error.h"
 
 #include <charconv>
@@ -9,7 +10,8 @@
 namespace rtlab {
 
 static constexpr const char* kValidNames =
-    "brute, bvh-median, bvh-middle, bvh-equal, bvh-sah, bvh-buckets[:B] with B in 2..32";
+    "brute, bvh-median, bvh-middle, bvh-equal, bvh-sah, bvh-buckets[:B] with B in 2..32, and the "
+    "same with bvh4- for the four-wide BVH";
 
 std::unique_ptr<Accelerator> makeAccelerator(const AcceleratorSpec& spec) {
     if (spec.maxLeaf < 1 || spec.maxLeaf > 65535)
@@ -19,13 +21,15 @@ std::unique_ptr<Accelerator> makeAccelerator(const AcceleratorSpec& spec) {
     BvhOptions options;
     options.maxLeaf = spec.maxLeaf;
     options.allAxes = spec.sahAllAxes;
-    std::string name = spec.name;
+    // bvh4-<method> is the four-wide traversal of the tree bvh-<method> builds.
+    bool wide = spec.name.starts_with("bvh4-");
+    std::string name = wide ? "bvh-" + spec.name.substr(5) : spec.name;
     if (name.starts_with("bvh-buckets:")) {
         std::string count = name.substr(12);
         auto [end, ec] = std::from_chars(count.data(), count.data() + count.size(), options.buckets);
         if (ec != std::errc() || end != count.data() + count.size() || options.buckets < 2 ||
             options.buckets > 32)
-            throw Error("--accel " + name + ": the bucket count must be an integer in 2..32");
+            throw Error("--accel " + spec.name + ": the bucket count must be an integer in 2..32");
         name = "bvh-buckets";
     }
     if (name == "bvh-median") options.method = SplitMethod::Median;
@@ -34,7 +38,10 @@ std::unique_ptr<Accelerator> makeAccelerator(const AcceleratorSpec& spec) {
     else if (name == "bvh-sah") options.method = SplitMethod::SahSweep;
     else if (name == "bvh-buckets") options.method = SplitMethod::SahBuckets;
     else throw Error("--accel " + spec.name + " is not an accelerator (valid: " + kValidNames + ")");
-    return std::make_unique<BvhAccelerator>(options, spec.recursiveTraversal);
+    if (!wide) return std::make_unique<BvhAccelerator>(options, spec.recursiveTraversal);
+    if (spec.recursiveTraversal)
+        throw Error("--traversal recursive applies to the binary BVH only, not to " + spec.name);
+    return std::make_unique<WideBvhAccelerator>(options);
 }
 
 }  // namespace rtlab

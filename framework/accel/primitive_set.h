@@ -21,6 +21,10 @@ public:
     const Bounds3f& bounds(uint32_t prim) const { return bounds_[prim]; }
     Vec3 centroid(uint32_t prim) const { return bounds_[prim].centre(); }
 
+    // Triangles come first (ids 0 .. triangleCount()-1), spheres after them.
+    uint32_t triangleCount() const { return static_cast<uint32_t>(triangles_.size()); }
+    const std::array<Vec3, 3>& triangle(uint32_t prim) const { return triangles_[prim]; }
+
     // Closest-hit step: tests primitive prim against (ray.tMin, hit.t]; on a hit, overwrites
     // hit and returns true.
     bool intersect(uint32_t prim, const Ray& ray, Hit& hit) const;

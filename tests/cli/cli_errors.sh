@@ -61,6 +61,8 @@ expect 1 "unknown accelerator" -- "$solution" render "$scene" -o "$work/x.png" -
 one_line_naming "bvh-magic" "unknown accelerator"
 expect 1 "bucket count out of range" -- "$solution" render "$scene" -o "$work/x.png" --accel bvh-buckets:99
 one_line_naming "bvh-buckets:99" "bucket count out of range"
+expect 1 "recursive traversal of the wide BVH" -- "$solution" render "$scene" -o "$work/x.png" --accel bvh4-sah --traversal recursive
+one_line_naming "bvh4-sah" "recursive traversal of the wide BVH"
 
 expect 1 "output into a missing folder" -- "$solution" render "$scene" -o "$work/no/such/dir/x.png"
 one_line_naming "no/such/dir" "output into a missing folder"

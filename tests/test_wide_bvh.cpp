@@ -1,0 +1,119 @@
+// The four-wide BVH (framework/accel/wide_bvh*.h): the collapse keeps the binary tree's leaves
+// and primitives, and the SIMD traversal reports exactly the hits of the binary traversal of
+// the same tree. Correctness against the oracle is in test_bvh.cpp (allAccelerators).
+#include "framework/accel/accelerator.h"
+#include "framework/accel/bvh_accelerator.h"
+#include "framework/accel/wide_bvh.h"
+#include "framework/scene/benchmark_rays.h"
+#include "framework/scene/gltf_loader.h"
+
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <string>
+
+using namespace rtlab;
+
+namespace {
+
+Scene loadModel(const char* file) {
+    std::string path = std::string(RTLAB_BINARY_DIR) + "/models/" + file;
+    REQUIRE_MESSAGE(std::filesystem::exists(path),
+                    path << " is missing: run scripts/fetch-models " << RTLAB_BINARY_DIR << "/models");
+    return loadGltf(path);
+}
+
+std::unique_ptr<Accelerator> built(const std::string& name, const PrimitiveSet& prims) {
+    AcceleratorSpec spec;
+    spec.name = name;
+    auto accel = makeAccelerator(spec);
+    accel->build(prims);
+    return accel;
+}
+
+}  // namespace
+
+TEST_CASE("collapsing keeps every leaf of the binary tree and folds two levels into one") {
+    Scene scene = loadModel("bunny.gltf");
+    PrimitiveSet prims(scene);
+    auto binary = built("bvh-buckets:12", prims);
+    const Bvh& bvh = dynamic_cast<const BvhAccelerator&>(*binary).bvh();
+    WideBvh wide = collapseToWide(bvh);
+
+    CHECK(wide.primIndices == bvh.primIndices);
+    size_t binaryLeaves = 0, wideLeaves = 0, openable = 0;
+    for (const BvhNode& node : bvh.nodes) binaryLeaves += node.isLeaf();
+    for (const WideBvhNode& node : wide.nodes) {
+        int used = 0, interior = 0;
+        for (int slot = 0; slot < kWideBvhWidth; ++slot) {
+            bool isLeaf = node.child[slot] & kLeafFlag;
+            used += !isLeaf || node.primCount[slot] > 0;
+            interior += !isLeaf;
+            wideLeaves += isLeaf && node.primCount[slot] > 0;
+            if (!isLeaf) CHECK(node.child[slot] < wide.nodes.size());
+        }
+        CHECK(used >= 2);
+        // A node with a free slot had no interior child left to open.
+        openable += used < kWideBvhWidth && interior > 0;
+    }
+    CHECK(wideLeaves == binaryLeaves);
+    // Interior nodes: n - 1 binary ones become about (n - 1) / 3 wide ones.
+    CHECK(wide.nodes.size() * 2 < bvh.nodes.size() - binaryLeaves);
+    CHECK(openable == 0);
+}
+
+TEST_CASE("a one-leaf tree gives a root with one leaf child") {
+    Bvh bvh;
+    bvh.nodes.push_back(BvhNode{Bounds3f(Vec3(0.0f), Vec3(1.0f)), 0, 1, 0, 0});
+    bvh.primIndices = {0};
+    WideBvh wide = collapseToWide(bvh);
+    REQUIRE(wide.nodes.size() == 1);
+    CHECK(wide.nodes[0].child[0] == kLeafFlag);
+    CHECK(wide.nodes[0].primCount[0] == 1);
+    CHECK(wide.nodes[0].planes[WideBvhNode::upperRow(2)][0] == 1.0f);
+    for (int slot = 1; slot < kWideBvhWidth; ++slot) CHECK(wide.nodes[0].primCount[slot] == 0);
+    CHECK(collapseToWide(Bvh{}).nodes.empty());
+}
+
+TEST_CASE("the wide traversal finds exactly the binary traversal's hits, with fewer node visits") {
+    for (const char* file : {"bunny.gltf", "engine.glb"}) {
+        CAPTURE(file);
+        Scene scene = loadModel(file);
+        PrimitiveSet prims(scene);
+        for (const char* method : {"sah", "buckets:12", "median"}) {
+            CAPTURE(method);
+            auto binary = built(std::string("bvh-") + method, prims);
+            auto wide = built(std::string("bvh4-") + method, prims);
+            for (RayKind kind : {RayKind::Primary, RayKind::Incoherent}) {
+                std::vector<Ray> rays = makeBenchmarkRays(kind, scene.bounds());
+                TraversalStats binaryStats, wideStats;
+                int different = 0, shadowDifferent = 0;
+                for (size_t i = 0; i < rays.size(); i += 97) {
+                    Ray ray = rays[i];
+                    Hit a = binary->intersect(ray, binaryStats), b = wide->intersect(ray, wideStats);
+                    // Same tree, same float arithmetic: the same bits.
+                    different += a.prim != b.prim || a.t != b.t || a.b1 != b.b1 || a.b2 != b.b2;
+                    ray.tMax = a.found() ? a.t * 0.999f : 1e3f;
+                    shadowDifferent += binary->occluded(ray, binaryStats) != wide->occluded(ray, wideStats);
+                }
+                CHECK(different == 0);
+                CHECK(shadowDifferent == 0);
+                CHECK(wideStats.primitiveTests <= binaryStats.primitiveTests * 11 / 10);
+                CHECK(wideStats.nodeVisits * 2 < binaryStats.nodeVisits);
+            }
+        }
+    }
+}
+
+TEST_CASE("the wide traversal survives rays with NaN or infinite parts, and hits nothing") {
+    Scene scene = loadModel("bunny.gltf");
+    PrimitiveSet prims(scene);
+    auto wide = built("bvh4-buckets:12", prims);
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = kInfinity;
+    TraversalStats stats;
+    for (Ray ray : {Ray{Vec3(nan, 1.0f, 20.0f), Vec3(0.0f, 0.0f, -1.0f)}, Ray{Vec3(0.0f, 1.0f, 20.0f), Vec3(0.0f, nan, -1.0f)},
+                    Ray{Vec3(inf, 1.0f, 20.0f), Vec3(-1.0f, 0.0f, 0.0f)}, Ray{Vec3(0.0f, 1.0f, 20.0f), Vec3(0.0f)}}) {
+        CHECK_FALSE(wide->intersect(ray, stats).found());
+        CHECK_FALSE(wide->occluded(ray, stats));
+    }
+}
