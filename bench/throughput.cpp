@@ -17,11 +17,12 @@ namespace {
 
 constexpr size_t kBruteForceRayStride = 64;
 
-// The binary BVHs of a1/a2 as students traverse them, then the framework's four-wide
-// traversal of the SAH trees (framework/accel/wide_bvh_accelerator.h).
+// The binary BVHs of a1/a2 as students traverse them, then the framework's four- and
+// eight-wide traversals of the SAH trees (framework/accel/wide_bvh_accelerator.h).
 const std::vector<std::string> kRtlabAccelerators{
     "brute",          "bvh-median",     "bvh-middle", "bvh-equal",     "bvh-sah",       "bvh-buckets:4",
-    "bvh-buckets:8",  "bvh-buckets:12", "bvh-buckets:16", "bvh-buckets:32", "bvh4-sah", "bvh4-buckets:12"};
+    "bvh-buckets:8",  "bvh-buckets:12", "bvh-buckets:16", "bvh-buckets:32", "bvh4-sah", "bvh4-buckets:12",
+    "bvh8-sah",       "bvh8-buckets:12"};
 
 std::vector<BenchRay> benchRays(RayKind kind, const Bounds3f& bounds, size_t stride) {
     std::vector<Ray> rays = makeBenchmarkRays(kind, bounds);
@@ -90,16 +91,21 @@ std::vector<ThroughputRecord> runThroughput(const ThroughputOptions& options) {
             bool isReference = label == "embree:medium";
             if (!isReference && !selected(options, label)) continue;
             std::string load = loadAverage();
+            // A row of this scene and system; the caller fills in what was measured.
+            auto newRecord = [&](RayKind rays, int threads) {
+                ThroughputRecord r;
+                r.scene = sceneName;
+                r.triangles = scene.triangleCount();
+                r.system = label;
+                r.rays = rays;
+                r.threads = threads;
+                r.loadAverage = load;
+                return r;
+            };
             auto skip = [&](const std::string& note) {
                 for (const SceneRays& set : raySets)
                     for (int threads : {1, 2}) {
-                        ThroughputRecord r;
-                        r.scene = sceneName;
-                        r.triangles = scene.triangleCount();
-                        r.system = label;
-                        r.rays = set.kind;
-                        r.threads = threads;
-                        r.loadAverage = load;
+                        ThroughputRecord r = newRecord(set.kind, threads);
                         r.measured = false;
                         r.note = note;
                         records.push_back(r);
@@ -138,12 +144,7 @@ std::vector<ThroughputRecord> runThroughput(const ThroughputOptions& options) {
                             set.embreeMediumMrays[threads] = timing.bestMraysPerSecond;
                             if (threads == 1) set.embreeMedium = results;
                         }
-                        ThroughputRecord r;
-                        r.scene = sceneName;
-                        r.triangles = scene.triangleCount();
-                        r.system = label;
-                        r.rays = set.kind;
-                        r.threads = threads;
+                        ThroughputRecord r = newRecord(set.kind, threads);
                         r.buildMs = threads == 1 ? build1 : build2;
                         r.mraysPerSecond = timing.bestMraysPerSecond;
                         r.ratioToEmbreeMedium = set.embreeMediumMrays[threads] > 0.0
@@ -168,7 +169,6 @@ std::vector<ThroughputRecord> runThroughput(const ThroughputOptions& options) {
                                 ++r.hits;
                                 r.sumT += result.t;
                             }
-                        r.loadAverage = load;
                         records.push_back(r);
                         std::cerr << " " << rayKindName(set.kind) << "@" << threads << "T "
                                   << timing.bestMraysPerSecond << std::flush;

@@ -305,8 +305,9 @@ std::vector<AcceleratorCase> allAccelerators() {
         spec.sahAllAxes = true;
         cases.push_back({spec});
     }
-    // The framework's four-wide traversal of the same trees.
-    for (const char* name : {"bvh4-median", "bvh4-middle", "bvh4-equal", "bvh4-sah", "bvh4-buckets:12"})
+    // The framework's wide traversals of the same trees.
+    for (const char* name : {"bvh4-median", "bvh4-middle", "bvh4-equal", "bvh4-sah", "bvh4-buckets:12", "bvh8-sah",
+                             "bvh8-buckets:12"})
         for (int maxLeaf : {1, 4, 8}) {
             AcceleratorSpec spec;
             spec.name = name;
@@ -319,7 +320,7 @@ std::vector<AcceleratorCase> allAccelerators() {
 // --- Structure invariants -----------------------------------------------------------------------
 
 // Every primitive in exactly one leaf, every node reachable once, two children per interior node
-// (one to four in a wide tree), no empty child, tight bounds
+// (one to eight in a wide tree), no empty child, tight bounds
 // (a node's box is exactly the union of its children's or its primitives' boxes), depth within
 // the traversal stack, and leaves no bigger than maxLeaf unless their centroids coincide or the
 // depth cap forced them.
@@ -357,7 +358,7 @@ void checkStructure(const StructureView& view, const PrimitiveSet& prims, const 
             bool mayBeBig = centroids.lower == centroids.upper || depth == kMaxBvhDepth - 1;
             bigLeaves += !mayBeBig && node.primCount > static_cast<uint32_t>(options.maxLeaf);
         } else {
-            badChildren += wide ? node.childCount > 4 : node.childCount != 2;
+            badChildren += wide ? node.childCount > 8 : node.childCount != 2;
             for (uint32_t c = 0; c < node.childCount; ++c) {
                 uint32_t child = view.children[node.firstChild + c];
                 if (child >= view.nodes.size()) {
@@ -409,7 +410,7 @@ void checkAllAccelerators(const Scene& scene, RaySet& set,
         auto accel = makeAccelerator(c.spec);
         accel->build(prims);
         if (c.spec.name != "brute")
-            checkStructure(accel->structure(), prims, optionsOf(c.spec), c.spec.name.starts_with("bvh4-"));
+            checkStructure(accel->structure(), prims, optionsOf(c.spec), !c.spec.name.starts_with("bvh-"));
         TraversalStats stats;
         int wrong = 0, leaks = 0, shadowMismatches = 0;
         std::string firstProblem;

@@ -1,6 +1,6 @@
-// The four-wide BVH (framework/accel/wide_bvh*.h): the collapse keeps the binary tree's leaves
-// and primitives, and the SIMD traversal reports exactly the hits of the binary traversal of
-// the same tree. Correctness against the oracle is in test_bvh.cpp (allAccelerators).
+// The wide BVHs (framework/accel/wide_bvh*.h, four and eight wide): the collapse keeps the
+// binary tree's leaves and primitives, and the SIMD traversal reports exactly the hits of the
+// binary traversal of the same tree. Correctness against the oracle is in test_bvh.cpp (allAccelerators).
 #include "framework/accel/accelerator.h"
 #include "framework/accel/bvh_accelerator.h"
 #include "framework/accel/wide_bvh.h"
@@ -10,7 +10,9 @@
 #include <doctest/doctest.h>
 
 #include <filesystem>
+#include <limits>
 #include <string>
+#include <type_traits>
 
 using namespace rtlab;
 
@@ -33,19 +35,21 @@ std::unique_ptr<Accelerator> built(const std::string& name, const PrimitiveSet& 
 
 }  // namespace
 
-TEST_CASE("collapsing keeps every leaf of the binary tree and folds two levels into one") {
+TEST_CASE_TEMPLATE("collapsing keeps every leaf of the binary tree and fills every node it can", Width,
+                   std::integral_constant<int, 4>, std::integral_constant<int, 8>) {
+    constexpr int W = Width::value;
     Scene scene = loadModel("bunny.gltf");
     PrimitiveSet prims(scene);
     auto binary = built("bvh-buckets:12", prims);
     const Bvh& bvh = dynamic_cast<const BvhAccelerator&>(*binary).bvh();
-    WideBvh wide = collapseToWide(bvh);
+    WideBvh<W> wide = collapseToWide<W>(bvh);
 
     CHECK(wide.primIndices == bvh.primIndices);
     size_t binaryLeaves = 0, wideLeaves = 0, openable = 0;
     for (const BvhNode& node : bvh.nodes) binaryLeaves += node.isLeaf();
-    for (const WideBvhNode& node : wide.nodes) {
+    for (const WideBvhNode<W>& node : wide.nodes) {
         int used = 0, interior = 0;
-        for (int slot = 0; slot < kWideBvhWidth; ++slot) {
+        for (int slot = 0; slot < W; ++slot) {
             bool isLeaf = node.child[slot] & kLeafFlag;
             used += !isLeaf || node.primCount[slot] > 0;
             interior += !isLeaf;
@@ -54,25 +58,28 @@ TEST_CASE("collapsing keeps every leaf of the binary tree and folds two levels i
         }
         CHECK(used >= 2);
         // A node with a free slot had no interior child left to open.
-        openable += used < kWideBvhWidth && interior > 0;
+        openable += used < W && interior > 0;
     }
     CHECK(wideLeaves == binaryLeaves);
-    // Interior nodes: n - 1 binary ones become about (n - 1) / 3 wide ones.
-    CHECK(wide.nodes.size() * 2 < bvh.nodes.size() - binaryLeaves);
     CHECK(openable == 0);
+    // n - 1 binary interior nodes become at most (n - 1) / (W - 1) + ... wide ones: each wide
+    // node folds at least two binary ones whenever it has an interior child.
+    CHECK(wide.nodes.size() * 2 < bvh.nodes.size() - binaryLeaves);
 }
 
-TEST_CASE("a one-leaf tree gives a root with one leaf child") {
+TEST_CASE_TEMPLATE("a one-leaf tree gives a root with one leaf child", Width, std::integral_constant<int, 4>,
+                   std::integral_constant<int, 8>) {
+    constexpr int W = Width::value;
     Bvh bvh;
     bvh.nodes.push_back(BvhNode{Bounds3f(Vec3(0.0f), Vec3(1.0f)), 0, 1, 0, 0});
     bvh.primIndices = {0};
-    WideBvh wide = collapseToWide(bvh);
+    WideBvh<W> wide = collapseToWide<W>(bvh);
     REQUIRE(wide.nodes.size() == 1);
     CHECK(wide.nodes[0].child[0] == kLeafFlag);
     CHECK(wide.nodes[0].primCount[0] == 1);
-    CHECK(wide.nodes[0].planes[WideBvhNode::upperRow(2)][0] == 1.0f);
-    for (int slot = 1; slot < kWideBvhWidth; ++slot) CHECK(wide.nodes[0].primCount[slot] == 0);
-    CHECK(collapseToWide(Bvh{}).nodes.empty());
+    CHECK(wide.nodes[0].planes[WideBvhNode<W>::upperRow(2)][0] == 1.0f);
+    for (int slot = 1; slot < W; ++slot) CHECK(wide.nodes[0].primCount[slot] == 0);
+    CHECK(collapseToWide<W>(Bvh{}).nodes.empty());
 }
 
 TEST_CASE("the wide traversal finds exactly the binary traversal's hits, with fewer node visits") {
@@ -80,10 +87,10 @@ TEST_CASE("the wide traversal finds exactly the binary traversal's hits, with fe
         CAPTURE(file);
         Scene scene = loadModel(file);
         PrimitiveSet prims(scene);
-        for (const char* method : {"sah", "buckets:12", "median"}) {
+        for (const char* method : {"4-sah", "4-buckets:12", "4-median", "8-sah", "8-buckets:12"}) {
             CAPTURE(method);
-            auto binary = built(std::string("bvh-") + method, prims);
-            auto wide = built(std::string("bvh4-") + method, prims);
+            auto binary = built(std::string("bvh-") + (method + 2), prims);
+            auto wide = built(std::string("bvh") + method, prims);
             for (RayKind kind : {RayKind::Primary, RayKind::Incoherent}) {
                 std::vector<Ray> rays = makeBenchmarkRays(kind, scene.bounds());
                 TraversalStats binaryStats, wideStats;
@@ -108,12 +115,17 @@ TEST_CASE("the wide traversal finds exactly the binary traversal's hits, with fe
 TEST_CASE("the wide traversal survives rays with NaN or infinite parts, and hits nothing") {
     Scene scene = loadModel("bunny.gltf");
     PrimitiveSet prims(scene);
-    auto wide = built("bvh4-buckets:12", prims);
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = kInfinity;
-    TraversalStats stats;
-    for (Ray ray : {Ray{Vec3(nan, 1.0f, 20.0f), Vec3(0.0f, 0.0f, -1.0f)}, Ray{Vec3(0.0f, 1.0f, 20.0f), Vec3(0.0f, nan, -1.0f)},
-                    Ray{Vec3(inf, 1.0f, 20.0f), Vec3(-1.0f, 0.0f, 0.0f)}, Ray{Vec3(0.0f, 1.0f, 20.0f), Vec3(0.0f)}}) {
-        CHECK_FALSE(wide->intersect(ray, stats).found());
-        CHECK_FALSE(wide->occluded(ray, stats));
+    const Ray rays[] = {Ray{Vec3(nan, 1.0f, 20.0f), Vec3(0.0f, 0.0f, -1.0f)},
+                        Ray{Vec3(0.0f, 1.0f, 20.0f), Vec3(0.0f, nan, -1.0f)},
+                        Ray{Vec3(inf, 1.0f, 20.0f), Vec3(-1.0f, 0.0f, 0.0f)}, Ray{Vec3(0.0f, 1.0f, 20.0f), Vec3(0.0f)}};
+    for (const char* name : {"bvh4-buckets:12", "bvh8-buckets:12"}) {
+        CAPTURE(name);
+        auto wide = built(name, prims);
+        TraversalStats stats;
+        for (const Ray& ray : rays) {
+            CHECK_FALSE(wide->intersect(ray, stats).found());
+            CHECK_FALSE(wide->occluded(ray, stats));
+        }
     }
 }

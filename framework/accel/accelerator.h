@@ -30,8 +30,8 @@ public:
 
 // Accelerator names accepted by --accel (docs/conventions.md):
 //   brute | bvh-median | bvh-middle | bvh-equal | bvh-sah | bvh-buckets[:B]
-// and the four-wide fast path over the same trees (wide_bvh_accelerator.h):
-//   bvh4-median | bvh4-middle | bvh4-equal | bvh4-sah | bvh4-buckets[:B]
+// and the wide fast path over the same trees (wide_bvh_accelerator.h), four or eight wide:
+//   bvh4-median | bvh4-middle | bvh4-equal | bvh4-sah | bvh4-buckets[:B], bvh8-... likewise
 struct AcceleratorSpec {
     std::string name = "bvh-buckets";
     int maxLeaf = 4;

@@ -11,7 +11,7 @@ namespace rtlab {
 
 static constexpr const char* kValidNames =
     "brute, bvh-median, bvh-middle, bvh-equal, bvh-sah, bvh-buckets[:B] with B in 2..32, and the "
-    "same with bvh4- for the four-wide BVH";
+    "same with bvh4- or bvh8- for the four- or eight-wide BVH";
 
 std::unique_ptr<Accelerator> makeAccelerator(const AcceleratorSpec& spec) {
     if (spec.maxLeaf < 1 || spec.maxLeaf > 65535)
@@ -21,9 +21,9 @@ std::unique_ptr<Accelerator> makeAccelerator(const AcceleratorSpec& spec) {
     BvhOptions options;
     options.maxLeaf = spec.maxLeaf;
     options.allAxes = spec.sahAllAxes;
-    // bvh4-<method> is the four-wide traversal of the tree bvh-<method> builds.
-    bool wide = spec.name.starts_with("bvh4-");
-    std::string name = wide ? "bvh-" + spec.name.substr(5) : spec.name;
+    // bvh4-<method> and bvh8-<method> traverse the tree bvh-<method> builds, four or eight wide.
+    int width = spec.name.starts_with("bvh4-") ? 4 : spec.name.starts_with("bvh8-") ? 8 : 2;
+    std::string name = width > 2 ? "bvh-" + spec.name.substr(5) : spec.name;
     if (name.starts_with("bvh-buckets:")) {
         std::string count = name.substr(12);
         auto [end, ec] = std::from_chars(count.data(), count.data() + count.size(), options.buckets);
@@ -38,10 +38,11 @@ std::unique_ptr<Accelerator> makeAccelerator(const AcceleratorSpec& spec) {
     else if (name == "bvh-sah") options.method = SplitMethod::SahSweep;
     else if (name == "bvh-buckets") options.method = SplitMethod::SahBuckets;
     else throw Error("--accel " + spec.name + " is not an accelerator (valid: " + kValidNames + ")");
-    if (!wide) return std::make_unique<BvhAccelerator>(options, spec.recursiveTraversal);
+    if (width == 2) return std::make_unique<BvhAccelerator>(options, spec.recursiveTraversal);
     if (spec.recursiveTraversal)
         throw Error("--traversal recursive applies to the binary BVH only, not to " + spec.name);
-    return std::make_unique<WideBvhAccelerator>(options);
+    if (width == 4) return std::make_unique<WideBvhAccelerator<4>>(options);
+    return std::make_unique<WideBvhAccelerator<8>>(options);
 }
 
 }  // namespace rtlab

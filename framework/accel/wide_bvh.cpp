@@ -5,28 +5,29 @@
 namespace rtlab {
 namespace {
 
+template <int W>
 class Collapser {
 public:
-    Collapser(const Bvh& binary, WideBvh& wide) : binary_(binary), wide_(wide) {}
+    Collapser(const Bvh& binary, WideBvh<W>& wide) : binary_(binary), wide_(wide) {}
 
     // Emits the wide node whose children are the binary node's descendants chosen below, then
     // their subtrees (depth-first, so a subtree's nodes are stored together). A binary leaf
     // at the root becomes a wide node with one leaf child.
     uint32_t emit(uint32_t binaryIndex) {
-        std::array<uint32_t, kWideBvhWidth> children{};
+        std::array<uint32_t, W> children{};
         int count = gatherChildren(binaryIndex, children);
 
         auto index = static_cast<uint32_t>(wide_.nodes.size());
         wide_.nodes.emplace_back();
-        for (int slot = 0; slot < kWideBvhWidth; ++slot) setEmpty(index, slot);
+        for (int slot = 0; slot < W; ++slot) setEmpty(index, slot);
         for (int slot = 0; slot < count; ++slot) {
             const BvhNode& child = binary_.nodes[children[slot]];
             uint32_t ref = child.isLeaf() ? (kLeafFlag | child.offset) : emit(children[slot]);
             // emit() may have grown the vector: index the node anew, never keep a reference.
-            WideBvhNode& node = wide_.nodes[index];
+            WideBvhNode<W>& node = wide_.nodes[index];
             for (int axis = 0; axis < 3; ++axis) {
-                node.planes[WideBvhNode::lowerRow(axis)][slot] = child.bounds.lower[axis];
-                node.planes[WideBvhNode::upperRow(axis)][slot] = child.bounds.upper[axis];
+                node.planes[WideBvhNode<W>::lowerRow(axis)][slot] = child.bounds.lower[axis];
+                node.planes[WideBvhNode<W>::upperRow(axis)][slot] = child.bounds.upper[axis];
             }
             node.child[slot] = ref;
             node.primCount[slot] = child.primCount;
@@ -37,7 +38,7 @@ public:
 private:
     // The binary node's two children, with interior ones replaced by their own children,
     // largest surface area first, while there is room.
-    int gatherChildren(uint32_t binaryIndex, std::array<uint32_t, kWideBvhWidth>& children) const {
+    int gatherChildren(uint32_t binaryIndex, std::array<uint32_t, W>& children) const {
         const BvhNode& node = binary_.nodes[binaryIndex];
         if (node.isLeaf()) {
             children[0] = binaryIndex;
@@ -46,7 +47,7 @@ private:
         children[0] = binaryIndex + 1;
         children[1] = node.offset;
         int count = 2;
-        while (count < kWideBvhWidth) {
+        while (count < W) {
             int open = -1;
             float largestArea = -1.0f;
             for (int i = 0; i < count; ++i) {
@@ -66,28 +67,32 @@ private:
     }
 
     void setEmpty(uint32_t index, int slot) {
-        WideBvhNode& node = wide_.nodes[index];
+        WideBvhNode<W>& node = wide_.nodes[index];
         for (int axis = 0; axis < 3; ++axis) {
-            node.planes[WideBvhNode::lowerRow(axis)][slot] = kInfinity;
-            node.planes[WideBvhNode::upperRow(axis)][slot] = -kInfinity;
+            node.planes[WideBvhNode<W>::lowerRow(axis)][slot] = kInfinity;
+            node.planes[WideBvhNode<W>::upperRow(axis)][slot] = -kInfinity;
         }
         node.child[slot] = kLeafFlag;
         node.primCount[slot] = 0;
     }
 
     const Bvh& binary_;
-    WideBvh& wide_;
+    WideBvh<W>& wide_;
 };
 
 }  // namespace
 
-WideBvh collapseToWide(const Bvh& binary) {
-    WideBvh wide;
+template <int W>
+WideBvh<W> collapseToWide(const Bvh& binary) {
+    WideBvh<W> wide;
     if (binary.nodes.empty()) return wide;
     wide.nodes.reserve(binary.nodes.size() / 2 + 1);  // about a third are needed; never regrows
     wide.primIndices = binary.primIndices;
-    Collapser(binary, wide).emit(0);
+    Collapser<W>(binary, wide).emit(0);
     return wide;
 }
+
+template WideBvh<4> collapseToWide<4>(const Bvh&);
+template WideBvh<8> collapseToWide<8>(const Bvh&);
 
 }  // namespace rtlab

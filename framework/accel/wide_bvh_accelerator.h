@@ -1,10 +1,12 @@
-// The wide BVH as an accelerator (--accel bvh4-sah, bvh4-buckets:12, ...): builds the binary
-// BVH with assignment a1/a2's buildBvh, folds it four-wide (wide_bvh.h) and traverses it with
-// a 4-wide SSE slab test and the per-ray watertight triangle test (sheared_ray.h).
+// The wide BVH as an accelerator (--accel bvh4-sah, bvh8-buckets:12, ...): builds the binary
+// BVH with assignment a1/a2's buildBvh, folds it W-wide (wide_bvh.h) and traverses it with a
+// W-wide slab test and the per-ray watertight triangle test (sheared_ray.h).
 //
 // This is the framework's fast path, the one the benchmarks put next to Embree. It shows what
 // the same tree gains from layout and SIMD alone; the student's own traversal is the binary
-// one (BvhAccelerator).
+// one (BvhAccelerator). The SIMD code is written with GCC's vector extensions, so it compiles
+// for any target: W = 4 fills an SSE or NEON register, W = 8 an AVX register (with -mavx or
+// -march=native; without, the compiler splits it into two 4-wide halves).
 #pragma once
 
 #include "framework/accel/accelerator.h"
@@ -13,12 +15,13 @@
 
 namespace rtlab {
 
+template <int W>
 class WideBvhAccelerator final : public Accelerator {
 public:
     explicit WideBvhAccelerator(const BvhOptions& options) : options_(options) {}
 
     void build(const PrimitiveSet& primitives) override;
-    // Node visits count wide nodes (four box tests each).
+    // Node visits count wide nodes (W box tests each).
     Hit intersect(const Ray& ray, TraversalStats& stats) const override;
     bool occluded(const Ray& ray, TraversalStats& stats) const override;
     StructureView structure() const override;
@@ -27,7 +30,7 @@ public:
 private:
     BvhOptions options_;
     const PrimitiveSet* primitives_ = nullptr;
-    WideBvh bvh_;
+    WideBvh<W> bvh_;
     // The triangles' vertices in leaf order (entry i belongs to bvh_.primIndices[i]), so a
     // leaf reads consecutive memory; sphere entries are unused.
     std::vector<TriangleCoordinates> leafTriangles_;

@@ -40,14 +40,26 @@ struct StackEntry {
     float tEnter;
 };
 
-// The children of an interior node, near one first along the ray.
-struct OrderedChildren {
-    uint32_t nearChild, farChild;
+// What testing both children of an interior node found: how many the ray hits (0, 1 or 2),
+// the one to visit next (the nearer, if both are hit) and, if both are, the far one to push.
+struct ChildHits {
+    int count;
+    StackEntry next, far;
 };
 
-inline OrderedChildren orderChildren(const BvhNode& node, uint32_t index, const std::array<int, 3>& dirIsNegative) {
+// "Nearer" is decided by the direction's sign on the node's axis, not by distance: the second
+// child lies beyond the first along that axis.
+inline ChildHits testChildren(const Bvh& bvh, uint32_t index, Traversal& traversal, float tMax,
+                              const std::array<int, 3>& dirIsNegative) {
+    const BvhNode& node = bvh.nodes[index];
     uint32_t first = index + 1, second = node.offset;
-    return dirIsNegative[node.axis] ? OrderedChildren{second, first} : OrderedChildren{first, second};
+    uint32_t nearChild = dirIsNegative[node.axis] ? second : first;
+    uint32_t farChild = dirIsNegative[node.axis] ? first : second;
+    float tNear, tFar;
+    bool hitsNear = traversal.hitsBox(bvh.nodes[nearChild].bounds, tMax, &tNear);
+    bool hitsFar = traversal.hitsBox(bvh.nodes[farChild].bounds, tMax, &tFar);
+    if (hitsNear) return {hitsFar ? 2 : 1, {nearChild, tNear}, {farChild, tFar}};
+    return {hitsFar ? 1 : 0, {farChild, tFar}, {}};
 }
 
 }  // namespace
@@ -65,17 +77,10 @@ bool intersectBvh(const Bvh& bvh, Traversal& traversal, Hit& hit) {
     for (;;) {
         const BvhNode& node = nodes[current];
         if (!node.isLeaf()) {
-            auto [nearChild, farChild] = orderChildren(node, current, dirIsNegative);
-            float tNear, tFar;
-            bool hitsNear = traversal.hitsBox(nodes[nearChild].bounds, hit.t, &tNear);
-            bool hitsFar = traversal.hitsBox(nodes[farChild].bounds, hit.t, &tFar);
-            if (hitsNear) {
-                if (hitsFar) stack[stackSize++] = {farChild, tFar};
-                current = nearChild;
-                continue;
-            }
-            if (hitsFar) {
-                current = farChild;
+            ChildHits children = testChildren(bvh, current, traversal, hit.t, dirIsNegative);
+            if (children.count == 2) stack[stackSize++] = children.far;
+            if (children.count > 0) {
+                current = children.next.node;
                 continue;
             }
         } else {
@@ -96,7 +101,7 @@ bool occludedBvh(const Bvh& bvh, Traversal& traversal) {
     const uint32_t* primIndices = bvh.primIndices.data();
     const std::array<int, 3> dirIsNegative = traversal.dirIsNegative();
     const float tMax = traversal.ray().tMax;
-    uint32_t stack[kMaxBvhDepth];
+    StackEntry stack[kMaxBvhDepth];
     int stackSize = 0;
 
     float tEnter;
@@ -105,16 +110,10 @@ bool occludedBvh(const Bvh& bvh, Traversal& traversal) {
     for (;;) {
         const BvhNode& node = nodes[current];
         if (!node.isLeaf()) {
-            auto [nearChild, farChild] = orderChildren(node, current, dirIsNegative);
-            bool hitsNear = traversal.hitsBox(nodes[nearChild].bounds, tMax, &tEnter);
-            bool hitsFar = traversal.hitsBox(nodes[farChild].bounds, tMax, &tEnter);
-            if (hitsNear) {
-                if (hitsFar) stack[stackSize++] = farChild;
-                current = nearChild;
-                continue;
-            }
-            if (hitsFar) {
-                current = farChild;
+            ChildHits children = testChildren(bvh, current, traversal, tMax, dirIsNegative);
+            if (children.count == 2) stack[stackSize++] = children.far;
+            if (children.count > 0) {
+                current = children.next.node;
                 continue;
             }
         } else {
@@ -122,7 +121,7 @@ bool occludedBvh(const Bvh& bvh, Traversal& traversal) {
                 if (traversal.occludes(primIndices[i])) return true;  // any blocker will do
         }
         if (stackSize == 0) return false;
-        current = stack[--stackSize];
+        current = stack[--stackSize].node;  // no closest hit to skip against
     }
 }
 
