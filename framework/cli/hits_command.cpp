@@ -142,7 +142,8 @@ void addHitsCommand(CLI::App& app) {
         ->required();
     addAcceleratorOptions(command, options->accelerator,
                           "oracle (exact, double precision) or an accelerator: brute, bvh-median, bvh-middle, "
-                          "bvh-equal, bvh-sah, bvh-buckets[:B]");
+                          "bvh-equal, bvh-sah, bvh-buckets[:B]; bvh4-... or bvh8-... for the wide BVH of the "
+                          "same tree");
     command->add_option("--threads", options->threads, "Worker threads (0 = one per hardware thread)")
         ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
