@@ -21,7 +21,10 @@ uint32_t splitSahSweep(std::span<BuildPrimitive> prims, const NodeInfo& node, co
     int longest = node.centroidBounds.longestAxis();
     for (int axis = 0; axis < 3; ++axis) {
         if (options.allAxes ? !(centroidExtent[axis] > 0) : axis != longest) continue;
-        std::sort(prims.begin(), prims.end(), CentroidOrder{axis});
+        // A child often comes sorted already: by its parent's axis, when that is its longest
+        // too. Checking costs one pass; sorting again would cost n log n comparisons.
+        if (!std::is_sorted(prims.begin(), prims.end(), CentroidOrder{axis}))
+            std::sort(prims.begin(), prims.end(), CentroidOrder{axis});
         sortedAxis = axis;
 
         rightBounds[n - 1] = prims[n - 1].bounds;
