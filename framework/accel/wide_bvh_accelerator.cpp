@@ -218,7 +218,7 @@ bool WideBvhAccelerator<W>::occluded(const Ray& ray, TraversalStats& stats) cons
 template <int W>
 StructureView WideBvhAccelerator<W>::structure() const {
     StructureView view;
-    view.primIndices = bvh_.primIndices;
+    view.primIndices.assign(bvh_.primIndices.begin(), bvh_.primIndices.end());
     if (bvh_.nodes.empty()) return view;
     // Wide nodes keep their children's boxes, so a leaf becomes a view node of its own, made
     // where its parent lists it. Children are listed right after their parent is made.

@@ -33,7 +33,7 @@ private:
     WideBvh<W> bvh_;
     // The triangles' vertices in leaf order (entry i belongs to bvh_.primIndices[i]), so a
     // leaf reads consecutive memory; sphere entries are unused.
-    std::vector<TriangleCoordinates> leafTriangles_;
+    std::vector<TriangleCoordinates, HugePageAllocator<TriangleCoordinates>> leafTriangles_;
 };
 
 }  // namespace rtlab
