@@ -5,12 +5,17 @@
 
 namespace rtlab {
 
-void BvhAccelerator::build(const PrimitiveSet& primitives) {
-    primitives_ = &primitives;
+std::vector<BuildPrimitive> buildPrimitivesOf(const PrimitiveSet& primitives) {
     std::vector<BuildPrimitive> prims;
     prims.reserve(primitives.size());  // not a sized vector: that would initialise every element first
     for (uint32_t i = 0; i < primitives.size(); ++i)
         prims.push_back(BuildPrimitive{primitives.bounds(i), primitives.centroid(i), i});
+    return prims;
+}
+
+void BvhAccelerator::build(const PrimitiveSet& primitives) {
+    primitives_ = &primitives;
+    std::vector<BuildPrimitive> prims = buildPrimitivesOf(primitives);
     bvh_ = prims.empty() ? Bvh{} : buildBvh(std::move(prims), options_);
 }
 

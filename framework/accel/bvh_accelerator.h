@@ -8,6 +8,9 @@
 
 namespace rtlab {
 
+// What buildBvh needs to know of each primitive: bounds, centroid and id, in id order.
+std::vector<BuildPrimitive> buildPrimitivesOf(const PrimitiveSet& primitives);
+
 class BvhAccelerator final : public Accelerator {
 public:
     BvhAccelerator(const BvhOptions& options, bool recursiveTraversal)

@@ -1,5 +1,6 @@
 #include "framework/accel/wide_bvh_accelerator.h"
 
+#include "framework/accel/bvh_accelerator.h"
 #include "framework/core/float_bits.h"
 #include "framework/interface/a1_bvh.h"
 
@@ -118,9 +119,7 @@ inline int orderChildren(const WideBvhNode<W>& node, const ChildHits<W>& hits, S
 template <int W>
 void WideBvhAccelerator<W>::build(const PrimitiveSet& primitives) {
     primitives_ = &primitives;
-    std::vector<BuildPrimitive> prims(primitives.size());
-    for (uint32_t i = 0; i < primitives.size(); ++i)
-        prims[i] = BuildPrimitive{primitives.bounds(i), primitives.centroid(i), i};
+    std::vector<BuildPrimitive> prims = buildPrimitivesOf(primitives);
     bvh_ = prims.empty() ? WideBvh<W>{} : collapseToWide<W>(buildBvh(std::move(prims), options_));
 
     leafTriangles_.resize(bvh_.primIndices.size());

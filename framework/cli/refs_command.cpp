@@ -197,20 +197,27 @@ const ReferenceEntry* currentEntry(const SceneJob& job, const RefsLayout& layout
     return &entry;
 }
 
+// Runs check(job, entry, scene) on every scene whose reference is current; check returns
+// whether the scene passed. A scene without a current reference fails (currentEntry says why).
+// Returns the names of the scenes that failed.
+template <typename Check>
+std::vector<std::string> checkCurrentReferences(const RefsLayout& layout, const ReferenceManifest& manifest,
+                                                const std::vector<SceneJob>& jobs, Check check) {
+    std::vector<std::string> failed;
+    for (const SceneJob& job : jobs) {
+        const ReferenceEntry* entry = currentEntry(job, layout, manifest);
+        if (!entry || !check(job, *entry, loadGltf(job.scene.string()))) failed.push_back(job.name);
+    }
+    return failed;
+}
+
 // Returns the names of the references that do not match.
 std::vector<std::string> checkReferences(const RefsLayout& layout, const ReferenceManifest& manifest,
                                          const std::vector<SceneJob>& jobs, const std::string& povray) {
-    std::vector<std::string> failed;
     TemporaryDirectory work("rtlab-refs-check");
-    for (const SceneJob& job : jobs) {
-        const ReferenceEntry* current = currentEntry(job, layout, manifest);
-        if (!current) {
-            failed.push_back(job.name);
-            continue;
-        }
-        const ReferenceEntry& entry = *current;
+    return checkCurrentReferences(layout, manifest, jobs,
+                                  [&](const SceneJob& job, const ReferenceEntry& entry, const Scene& scene) {
         fs::path committed = layout.refsDir / entry.image;
-        Scene scene = loadGltf(job.scene.string());
         fs::path fresh = work.path() / entry.image;
         renderPovReference(scene, scene.camera(entry.camera), entry.width, entry.height, fresh);
         ImageComparison c = compareImages(fresh.string(), committed.string(), 0.0);
@@ -219,9 +226,8 @@ std::vector<std::string> checkReferences(const RefsLayout& layout, const Referen
                        << c.pixelsOverThreshold << " differ, max " << c.maxCodes() << " codes)";
         if (entry.povray != povray) std::cout << " [reference made with " << entry.povray << "]";
         std::cout << "\n";
-        if (!identical) failed.push_back(job.name);
-    }
-    return failed;
+        return identical;
+    });
 }
 
 std::vector<std::string> checkHitSets(const RefsOptions& options, const std::vector<SceneJob>& jobs) {
@@ -252,18 +258,11 @@ constexpr double kParityShare = 0.999;
 
 std::vector<std::string> checkParity(const RefsOptions& options, const RefsLayout& layout,
                                      const ReferenceManifest& manifest, const std::vector<SceneJob>& jobs) {
-    std::vector<std::string> failed;
     TemporaryDirectory work("rtlab-refs-parity");
     fs::path outputDir = options.parityDir.empty() ? work.path() : fs::path(options.parityDir);
     fs::create_directories(outputDir);
-    for (const SceneJob& job : jobs) {
-        const ReferenceEntry* current = currentEntry(job, layout, manifest);
-        if (!current) {
-            failed.push_back(job.name);
-            continue;
-        }
-        const ReferenceEntry& entry = *current;
-        Scene scene = loadGltf(job.scene.string());
+    return checkCurrentReferences(layout, manifest, jobs,
+                                  [&](const SceneJob& job, const ReferenceEntry& entry, const Scene& scene) {
         PrimitiveSet primitives(scene);
         auto accelerator = makeAccelerator(AcceleratorSpec{});
         accelerator->build(primitives);
@@ -288,9 +287,8 @@ std::vector<std::string> checkParity(const RefsOptions& options, const RefsLayou
             std::cout << ", heat map " << heat.string();
         }
         std::cout << "\n";
-        if (!meets) failed.push_back(job.name);
-    }
-    return failed;
+        return meets;
+    });
 }
 
 void refs(const RefsOptions& options) {
