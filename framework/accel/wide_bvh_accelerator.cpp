@@ -2,6 +2,7 @@
 
 #include "framework/accel/bvh_accelerator.h"
 #include "framework/core/float_bits.h"
+#include "framework/core/simd.h"
 #include "framework/interface/a1_bvh.h"
 
 #include <bit>
@@ -10,28 +11,8 @@
 namespace rtlab {
 namespace {
 
-// W floats in one SIMD register (GCC vector extension): +, -, *, comparisons and ?: work lane
-// by lane.
 template <int W>
-struct SimdTypes {
-    typedef float Lanes __attribute__((vector_size(W * sizeof(float))));
-    typedef int32_t LaneMask __attribute__((vector_size(W * sizeof(int32_t))));  // -1 or 0 per lane
-};
-
-template <int W>
-using Lanes = typename SimdTypes<W>::Lanes;
-
-template <int W>
-Lanes<W> broadcast(float value) {
-    return value - Lanes<W>{};
-}
-
-template <int W>
-Lanes<W> loadRow(const float (&row)[W]) {
-    Lanes<W> lanes;
-    std::memcpy(&lanes, row, sizeof lanes);
-    return lanes;
-}
+using Lanes = Simd<float, W>;
 
 // What the W-wide slab test needs per ray, each value broadcast to all lanes.
 template <int W>
@@ -61,7 +42,7 @@ struct WideRay {
 template <int W>
 struct ChildHits {
     Lanes<W> tEnter;
-    typename SimdTypes<W>::LaneMask hit;
+    SimdMask<W> hit;
 };
 
 template <int W>
@@ -69,8 +50,8 @@ ChildHits<W> intersectChildren(const WideBvhNode<W>& node, const WideRay<W>& ray
     const Lanes<W> farScale = broadcast<W>(1.0f + 2.0f * gamma(3));
     Lanes<W> tNear = ray.tMin, tFar = broadcast<W>(tMax);
     for (int axis = 0; axis < 3; ++axis) {
-        Lanes<W> t0 = (loadRow<W>(node.planes[ray.nearRow[axis]]) - ray.origin[axis]) * ray.invDirection[axis];
-        Lanes<W> t1 = (loadRow<W>(node.planes[ray.farRow[axis]]) - ray.origin[axis]) * ray.invDirection[axis];
+        Lanes<W> t0 = (load<W>(node.planes[ray.nearRow[axis]]) - ray.origin[axis]) * ray.invDirection[axis];
+        Lanes<W> t1 = (load<W>(node.planes[ray.farRow[axis]]) - ray.origin[axis]) * ray.invDirection[axis];
         t1 *= farScale;
         // A NaN distance (0 * inf: the origin on a slab plane, direction 0 on that axis) fails
         // the comparison and leaves the interval as it was. This is max and min (MAXPS/MINPS).
@@ -78,6 +59,11 @@ ChildHits<W> intersectChildren(const WideBvhNode<W>& node, const WideRay<W>& ray
         tFar = t1 < tFar ? t1 : tFar;
     }
     return {tNear, tNear <= tFar};
+}
+
+// How many packets a leaf of primCount primitives fills.
+uint32_t packetCount(uint32_t primCount) {
+    return (primCount + TrianglePacket::kLanes - 1) / TrianglePacket::kLanes;
 }
 
 // A child waiting to be visited.
@@ -97,13 +83,9 @@ constexpr int kStackSize = (W - 1) * kMaxBvhDepth + W;
 // compaction has no branch to mispredict; then an insertion sort (one or two children are
 // hit at most nodes).
 template <int W>
-inline int orderChildren(const WideBvhNode<W>& node, const ChildHits<W>& hits, StackEntry* out) {
+inline int orderChildren(const WideBvhNode<W>& node, const ChildHits<W>& hits, unsigned mask, StackEntry* out) {
     float tEnter[W];
-    int32_t hit[W];
-    std::memcpy(tEnter, &hits.tEnter, sizeof tEnter);  // two stores instead of a shuffle per lane
-    std::memcpy(hit, &hits.hit, sizeof hit);
-    unsigned mask = 0;
-    for (int slot = 0; slot < W; ++slot) mask |= (hit[slot] & 1u) << slot;
+    std::memcpy(tEnter, &hits.tEnter, sizeof tEnter);  // one store instead of a shuffle per lane
     int count = 0;
     for (; mask != 0; mask &= mask - 1) {
         int slot = std::countr_zero(mask);
@@ -119,13 +101,39 @@ inline int orderChildren(const WideBvhNode<W>& node, const ChildHits<W>& hits, S
 template <int W>
 void WideBvhAccelerator<W>::build(const PrimitiveSet& primitives) {
     primitives_ = &primitives;
+    hasSpheres_ = primitives.triangleCount() < primitives.size();
     std::vector<BuildPrimitive> prims = buildPrimitivesOf(primitives);
-    bvh_ = prims.empty() ? WideBvh<W>{} : collapseToWide<W>(buildBvh(std::move(prims), options_));
+    WideBvh<W> wide = prims.empty() ? WideBvh<W>{} : collapseToWide<W>(buildBvh(std::move(prims), options_));
 
-    leafTriangles_.resize(bvh_.primIndices.size());
-    for (size_t i = 0; i < bvh_.primIndices.size(); ++i)
-        if (bvh_.primIndices[i] < primitives.triangleCount())
-            leafTriangles_[i] = coordinatesOf(primitives.triangle(bvh_.primIndices[i]));
+    // Each leaf's primitives go into packets of four, in the order the nodes are stored (depth
+    // first), so a leaf reads consecutive memory. A sphere takes a lane with no triangle and is
+    // tested on its own.
+    packets_.clear();
+    for (WideBvhNode<W>& node : wide.nodes) {
+        for (int slot = 0; slot < W; ++slot) {
+            if (!(node.child[slot] & kLeafFlag) || node.primCount[slot] == 0) continue;
+            uint32_t firstEntry = node.child[slot] & ~kLeafFlag;
+            node.child[slot] = kLeafFlag | static_cast<uint32_t>(packets_.size());
+            for (uint32_t i = 0; i < node.primCount[slot]; ++i) {
+                int lane = i % TrianglePacket::kLanes;
+                if (lane == 0) packets_.emplace_back();
+                uint32_t prim = wide.primIndices[firstEntry + i];
+                if (prim < primitives.triangleCount())
+                    packets_.back().set(lane, prim, primitives.triangle(prim));
+                else
+                    packets_.back().prim[lane] = prim;
+            }
+        }
+    }
+    nodes_ = std::move(wide.nodes);
+}
+
+template <int W>
+bool WideBvhAccelerator<W>::intersectSpheres(const TrianglePacket& packet, const Ray& ray, Hit& hit) const {
+    bool found = false;
+    for (uint32_t prim : packet.prim)
+        if (prim != kNoPrimitive && prim >= primitives_->triangleCount()) found |= primitives_->intersect(prim, ray, hit);
+    return found;
 }
 
 template <int W>
@@ -133,23 +141,31 @@ Hit WideBvhAccelerator<W>::intersect(const Ray& ray, TraversalStats& stats) cons
     ++stats.rays;
     Hit hit;
     hit.t = ray.tMax;
-    if (bvh_.nodes.empty()) return Hit{};
+    if (nodes_.empty()) return Hit{};
 
     const WideRay<W> wideRay(ray);
     const ShearedRay shearedRay(ray);
-    const uint32_t triangleCount = primitives_->triangleCount();
     uint64_t nodeVisits = 0, primitiveTests = 0;
     StackEntry stack[kStackSize<W>];
     int stackSize = 0;
     StackEntry current{0, 0, ray.tMin};
     for (;;) {
         if (!(current.ref & kLeafFlag)) {
-            const WideBvhNode<W>& node = bvh_.nodes[current.ref];
+            const WideBvhNode<W>& node = nodes_[current.ref];
             ++nodeVisits;
-            // The hit children go onto the stack, the nearest on top; it is visited next, the
+            ChildHits<W> hits = intersectChildren<W>(node, wideRay, hit.t);
+            unsigned mask = laneBits<W>(hits.hit);
+            if (mask != 0 && (mask & (mask - 1)) == 0) {
+                // One child hit, the commonest case: it is next, and nothing waits. (Only
+                // waiting children need their entry distance.)
+                int slot = std::countr_zero(mask);
+                current = {node.child[slot], node.primCount[slot], 0.0f};
+                continue;
+            }
+            // Several: they go onto the stack, the nearest on top; it is visited next, the
             // others wait, farthest deepest.
             StackEntry* pushed = stack + stackSize;
-            int count = orderChildren<W>(node, intersectChildren<W>(node, wideRay, hit.t), pushed);
+            int count = orderChildren<W>(node, hits, mask, pushed);
             if (count > 0) {
                 stackSize += count - 1;
                 current = pushed[count - 1];
@@ -158,13 +174,11 @@ Hit WideBvhAccelerator<W>::intersect(const Ray& ray, TraversalStats& stats) cons
         } else {
             uint32_t first = current.ref & ~kLeafFlag;
             primitiveTests += current.primCount;
-            for (uint32_t i = first; i < first + current.primCount; ++i) {
-                uint32_t prim = bvh_.primIndices[i];
-                TriangleHit triangleHit;
-                if (prim >= triangleCount)
-                    primitives_->intersect(prim, ray, hit);
-                else if (shearedRay.intersect(leafTriangles_[i], hit.t, &triangleHit))
-                    hit = Hit{triangleHit.t, prim, triangleHit.b1, triangleHit.b2};
+            for (uint32_t p = first; p < first + packetCount(current.primCount); ++p) {
+                const TrianglePacket& packet = packets_[p];
+                if (PacketHit nearest = shearedRay.closest(packet, hit.t); nearest.lane >= 0)
+                    hit = Hit{nearest.hit.t, packet.prim[nearest.lane], nearest.hit.b1, nearest.hit.b2};
+                if (hasSpheres_) intersectSpheres(packet, ray, hit);
             }
         }
         // Next waiting child, skipping those that start beyond the closest hit so far.
@@ -183,31 +197,28 @@ Hit WideBvhAccelerator<W>::intersect(const Ray& ray, TraversalStats& stats) cons
 template <int W>
 bool WideBvhAccelerator<W>::occluded(const Ray& ray, TraversalStats& stats) const {
     ++stats.rays;
-    if (bvh_.nodes.empty()) return false;
+    if (nodes_.empty()) return false;
 
     const WideRay<W> wideRay(ray);
     const ShearedRay shearedRay(ray);
-    const uint32_t triangleCount = primitives_->triangleCount();
     StackEntry stack[kStackSize<W>];
     int stackSize = 0;
     stack[stackSize++] = StackEntry{0, 0, ray.tMin};
     while (stackSize > 0) {
         StackEntry current = stack[--stackSize];
         if (!(current.ref & kLeafFlag)) {
-            const WideBvhNode<W>& node = bvh_.nodes[current.ref];
+            const WideBvhNode<W>& node = nodes_[current.ref];
             ++stats.nodeVisits;
-            stackSize += orderChildren<W>(node, intersectChildren<W>(node, wideRay, ray.tMax), stack + stackSize);
+            ChildHits<W> hits = intersectChildren<W>(node, wideRay, ray.tMax);
+            stackSize += orderChildren<W>(node, hits, laneBits<W>(hits.hit), stack + stackSize);
             continue;
         }
         uint32_t first = current.ref & ~kLeafFlag;
-        for (uint32_t i = first; i < first + current.primCount; ++i) {
-            ++stats.primitiveTests;
-            uint32_t prim = bvh_.primIndices[i];
+        stats.primitiveTests += current.primCount;
+        for (uint32_t p = first; p < first + packetCount(current.primCount); ++p) {
             Hit hit;
             hit.t = ray.tMax;
-            TriangleHit triangleHit;
-            if (prim >= triangleCount ? primitives_->intersect(prim, ray, hit)
-                                      : shearedRay.intersect(leafTriangles_[i], ray.tMax, &triangleHit))
+            if (shearedRay.anyHit(packets_[p], ray.tMax) || (hasSpheres_ && intersectSpheres(packets_[p], ray, hit)))
                 return true;  // any blocker will do
         }
     }
@@ -217,8 +228,7 @@ bool WideBvhAccelerator<W>::occluded(const Ray& ray, TraversalStats& stats) cons
 template <int W>
 StructureView WideBvhAccelerator<W>::structure() const {
     StructureView view;
-    view.primIndices.assign(bvh_.primIndices.begin(), bvh_.primIndices.end());
-    if (bvh_.nodes.empty()) return view;
+    if (nodes_.empty()) return view;
     // Wide nodes keep their children's boxes, so a leaf becomes a view node of its own, made
     // where its parent lists it. Children are listed right after their parent is made.
     struct Pending {
@@ -230,7 +240,7 @@ StructureView WideBvhAccelerator<W>::structure() const {
     while (!pending.empty()) {
         auto [viewIndex, wideIndex] = pending.back();
         pending.pop_back();
-        const WideBvhNode<W>& node = bvh_.nodes[wideIndex];
+        const WideBvhNode<W>& node = nodes_[wideIndex];
         StructureNode out;
         out.firstChild = static_cast<uint32_t>(view.children.size());
         for (int slot = 0; slot < W; ++slot) {
@@ -248,8 +258,11 @@ StructureView WideBvhAccelerator<W>::structure() const {
             StructureNode child;
             child.bounds = box;
             if (isLeaf) {
-                child.firstPrim = node.child[slot] & ~kLeafFlag;
+                child.firstPrim = static_cast<uint32_t>(view.primIndices.size());
                 child.primCount = node.primCount[slot];
+                uint32_t firstPacket = node.child[slot] & ~kLeafFlag;
+                for (uint32_t i = 0; i < child.primCount; ++i)
+                    view.primIndices.push_back(packets_[firstPacket + i / TrianglePacket::kLanes].prim[i % TrianglePacket::kLanes]);
             } else {
                 pending.push_back({childIndex, node.child[slot]});
             }
@@ -262,8 +275,7 @@ StructureView WideBvhAccelerator<W>::structure() const {
 
 template <int W>
 size_t WideBvhAccelerator<W>::memoryBytes() const {
-    return bvh_.nodes.size() * sizeof(WideBvhNode<W>) + bvh_.primIndices.size() * sizeof(uint32_t) +
-           leafTriangles_.size() * sizeof(leafTriangles_[0]);
+    return nodes_.size() * sizeof(WideBvhNode<W>) + packets_.size() * sizeof(TrianglePacket);
 }
 
 template class WideBvhAccelerator<4>;

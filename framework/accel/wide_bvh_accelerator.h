@@ -1,6 +1,6 @@
 // The wide BVH as an accelerator (--accel bvh4-sah, bvh8-buckets:12, ...): builds the binary
 // BVH with assignment a1/a2's buildBvh, folds it W-wide (wide_bvh.h) and traverses it with a
-// W-wide slab test and the per-ray watertight triangle test (sheared_ray.h).
+// W-wide slab test and the watertight triangle test on four triangles at once (triangle_packet.h).
 //
 // This is the framework's fast path, the one the benchmarks put next to Embree. It shows what
 // the same tree gains from layout and SIMD alone; the student's own traversal is the binary
@@ -10,7 +10,7 @@
 #pragma once
 
 #include "framework/accel/accelerator.h"
-#include "framework/accel/sheared_ray.h"
+#include "framework/accel/triangle_packet.h"
 #include "framework/accel/wide_bvh.h"
 
 namespace rtlab {
@@ -28,12 +28,17 @@ public:
     size_t memoryBytes() const override;
 
 private:
+    // Tests the spheres among a packet's primitives (lanes without a triangle), updating hit;
+    // true when one is hit.
+    bool intersectSpheres(const TrianglePacket& packet, const Ray& ray, Hit& hit) const;
+
     BvhOptions options_;
     const PrimitiveSet* primitives_ = nullptr;
-    WideBvh<W> bvh_;
-    // The triangles' vertices in leaf order (entry i belongs to bvh_.primIndices[i]), so a
-    // leaf reads consecutive memory; sphere entries are unused.
-    std::vector<TriangleCoordinates, HugePageAllocator<TriangleCoordinates>> leafTriangles_;
+    bool hasSpheres_ = false;
+    // The wide tree; a leaf child refers to its first packet (kLeafFlag | packet index), and
+    // its primCount primitives fill that packet and the next ones, four to a packet.
+    std::vector<WideBvhNode<W>, HugePageAllocator<WideBvhNode<W>>> nodes_;
+    std::vector<TrianglePacket, HugePageAllocator<TrianglePacket>> packets_;
 };
 
 }  // namespace rtlab

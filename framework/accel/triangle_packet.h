@@ -1,0 +1,150 @@
+// Four triangles tested against one ray at once: the watertight test of a0 (Woop, Benthin,
+// Wald 2013) with its per-ray half done once per ray and its per-triangle half done in four
+// SIMD lanes (docs/performance.md, "The wide BVH").
+//
+// The arithmetic is the a0 reference's (solutions/a0_intersect/ray_triangle.cpp) operation for
+// operation, lane by lane, and of several hits the one a loop over the lanes in order would keep
+// is returned. So a traversal using packets reports the same hits, bit for bit, as one calling
+// intersectTriangle on each triangle.
+#pragma once
+
+#include "framework/core/float_bits.h"
+#include "framework/core/ray.h"
+#include "framework/core/simd.h"
+#include "framework/interface/a0_intersect.h"
+
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+
+namespace rtlab {
+
+// The lane of a packet that holds no triangle.
+inline constexpr uint32_t kNoPrimitive = 0xffffffffu;
+
+struct alignas(16) TrianglePacket {
+    static constexpr int kLanes = 4;
+    // vertex[v][axis][lane]: coordinate `axis` of vertex v of the lane's triangle, so one row is
+    // one SIMD load. A lane without a triangle has all three vertices at the origin: a
+    // degenerate triangle, whose edge functions are all zero, so no ray hits it.
+    float vertex[3][3][kLanes] = {};
+    uint32_t prim[kLanes] = {kNoPrimitive, kNoPrimitive, kNoPrimitive, kNoPrimitive};
+
+    void set(int lane, uint32_t id, const std::array<Vec3, 3>& triangle) {
+        prim[lane] = id;
+        for (int v = 0; v < 3; ++v)
+            for (int axis = 0; axis < 3; ++axis) vertex[v][axis][lane] = triangle[v][axis];
+    }
+};
+
+// The lane of the nearest hit in a packet (-1 for none) and where it is.
+struct PacketHit {
+    int lane = -1;
+    TriangleHit hit;
+};
+
+// One ray, prepared for packet tests: the axis that becomes z, the shear that maps the ray
+// onto +z, and the origin, each broadcast to all lanes.
+class ShearedRay {
+    using Lanes = Simd<float, TrianglePacket::kLanes>;
+    using Mask = SimdMask<TrianglePacket::kLanes>;
+
+public:
+    explicit ShearedRay(const Ray& ray) {
+        // Plain arrays: indexing a glm vector by a run-time axis compiles to a switch.
+        const float origin[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+        const float direction[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
+        int kz = maxComponentIndex(Vec3(std::fabs(direction[0]), std::fabs(direction[1]), std::fabs(direction[2])));
+        int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+        axis_ = {kx, ky, kz};
+        float dz = direction[kz];
+        valid_ = dz != 0.0f;  // false for a zero-length or NaN direction
+        for (int i = 0; i < 3; ++i) origin_[i] = broadcast<4>(origin[axis_[i]]);
+        sx_ = broadcast<4>(-direction[kx] / dz);
+        sy_ = broadcast<4>(-direction[ky] / dz);
+        sz_ = broadcast<4>(1.0f / dz);
+        tMin_ = broadcast<4>(ray.tMin);
+    }
+
+    // The nearest hit with ray.tMin < t <= tMax among the packet's triangles; of equally near
+    // ones, the last lane's (a loop over the lanes accepting t <= tMax keeps the last).
+    PacketHit closest(const TrianglePacket& packet, float tMax) const {
+        LaneHits lanes = test(packet, tMax);
+        unsigned hits = laneBits<4>(lanes.hit);
+        if (hits == 0) return {};
+        int lane = std::countr_zero(hits);
+        if (hits & (hits - 1)) {  // several hits: the nearest, the last of equals
+            float nearest = minimum(lanes.hit ? lanes.t : broadcast<4>(kInfinity));
+            lane = std::bit_width(hits & laneBits<4>(lanes.t == broadcast<4>(nearest))) - 1;
+        }
+        return {lane, TriangleHit{lanes.t[lane], lanes.b1[lane], lanes.b2[lane]}};
+    }
+
+    // Whether any of the packet's triangles is hit with ray.tMin < t <= tMax.
+    bool anyHit(const TrianglePacket& packet, float tMax) const { return laneBits<4>(test(packet, tMax).hit) != 0; }
+
+private:
+    struct LaneHits {
+        Lanes t, b1, b2;
+        Mask hit;
+    };
+
+    // The test itself, lane by lane: which lanes are hit, and where.
+    LaneHits test(const TrianglePacket& packet, float tMax) const {
+        if (!valid_) return LaneHits{Lanes{}, Lanes{}, Lanes{}, Mask{}};
+        // Vertex coordinates relative to the ray origin, in the permuted axes (x, y, z) = (kx,
+        // ky, kz): a row load each.
+        Lanes a[3], b[3], c[3];
+        for (int i = 0; i < 3; ++i) {
+            a[i] = load<4>(packet.vertex[0][axis_[i]]) - origin_[i];
+            b[i] = load<4>(packet.vertex[1][axis_[i]]) - origin_[i];
+            c[i] = load<4>(packet.vertex[2][axis_[i]]) - origin_[i];
+        }
+        Lanes ax = a[0] + sx_ * a[2], ay = a[1] + sy_ * a[2];
+        Lanes bx = b[0] + sx_ * b[2], by = b[1] + sy_ * b[2];
+        Lanes cx = c[0] + sx_ * c[2], cy = c[1] + sy_ * c[2];
+
+        Lanes e0 = differenceOfProducts(bx, cy, by, cx);
+        Lanes e1 = differenceOfProducts(cx, ay, cy, ax);
+        Lanes e2 = differenceOfProducts(ax, by, ay, bx);
+        const Lanes zero{};
+        Mask anyNegative = (e0 < zero) | (e1 < zero) | (e2 < zero);
+        Mask anyPositive = (e0 > zero) | (e1 > zero) | (e2 > zero);
+        Lanes det = e0 + e1 + e2;
+
+        Lanes az = sz_ * a[2], bz = sz_ * b[2], cz = sz_ * c[2];
+        Lanes invDet = broadcast<4>(1.0f) / det;
+        Lanes t = (e0 * az + e1 * bz + e2 * cz) * invDet;
+        // Written so that NaN fails: det != 0 is true for NaN, but then t is NaN. t - t is 0
+        // exactly when t is finite.
+        Mask hit = ~(anyNegative & anyPositive) & (det != zero) & (t > tMin_) & (t <= broadcast<4>(tMax)) &
+                   ((t - t) == zero);
+        return {t, e1 * invDet, e2 * invDet, hit};
+    }
+
+    // a*b - c*d per lane with the exact sign, as float_bits.h's differenceOfProducts: the
+    // products are exact in double.
+    static Lanes differenceOfProducts(Lanes a, Lanes b, Lanes c, Lanes d) {
+        using Doubles = Simd<double, 4>;
+        Doubles ab = __builtin_convertvector(a, Doubles) * __builtin_convertvector(b, Doubles);
+        Doubles cd = __builtin_convertvector(c, Doubles) * __builtin_convertvector(d, Doubles);
+        return __builtin_convertvector(ab - cd, Lanes);
+    }
+
+    static float minimum(Lanes v) {
+        Lanes swapped = __builtin_shuffle(v, Mask{2, 3, 0, 1});
+        v = swapped < v ? swapped : v;
+        swapped = __builtin_shuffle(v, Mask{1, 0, 3, 2});
+        v = swapped < v ? swapped : v;
+        return v[0];
+    }
+
+    std::array<int, 3> axis_;
+    Lanes origin_[3];
+    Lanes sx_, sy_, sz_;
+    Lanes tMin_;
+    bool valid_;
+};
+
+}  // namespace rtlab

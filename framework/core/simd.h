@@ -1,0 +1,57 @@
+// Portable SIMD values: GCC's vector extensions. Simd<float, 4> is four floats in one register;
+// +, -, *, /, comparisons and ?: work lane by lane, and a comparison gives a mask of -1 (true)
+// or 0 per lane. The compiler picks the instructions for the target: SSE or NEON for 16 bytes,
+// one AVX register for 32 bytes with -mavx or -march=native (two 16-byte halves without).
+//
+// Lane arithmetic is IEEE arithmetic, so a lane computes exactly what the same scalar
+// expression computes; the wide BVH relies on that to report the scalar tests' hits bit for bit.
+#pragma once
+
+#include <bit>
+#include <cstdint>
+#include <cstring>
+
+namespace rtlab {
+
+template <typename T, int N>
+struct SimdVector {
+    typedef T type __attribute__((vector_size(N * sizeof(T))));
+};
+
+template <typename T, int N>
+using Simd = typename SimdVector<T, N>::type;
+
+// The integer vector a comparison of Simd<float, N> returns.
+template <int N>
+using SimdMask = Simd<int32_t, N>;
+
+template <int N>
+Simd<float, N> broadcast(float value) {
+    return value - Simd<float, N>{};
+}
+
+template <int N>
+Simd<float, N> load(const float (&values)[N]) {
+    Simd<float, N> lanes;
+    std::memcpy(&lanes, values, sizeof lanes);
+    return lanes;
+}
+
+// Bit i set when lane i of the mask is true: one MOVMSKPS on x86 (GCC does not turn the
+// portable loop into it), a loop elsewhere.
+template <int N>
+unsigned laneBits(SimdMask<N> mask) {
+#if defined(__AVX__)
+    if constexpr (N == 8) return static_cast<unsigned>(__builtin_ia32_movmskps256(std::bit_cast<Simd<float, 8>>(mask)));
+#endif
+#if defined(__SSE__)
+    if constexpr (N == 4) return static_cast<unsigned>(__builtin_ia32_movmskps(std::bit_cast<Simd<float, 4>>(mask)));
+#endif
+    int32_t lanes[N];
+    std::memcpy(lanes, &mask, sizeof lanes);
+    unsigned bits = 0;
+    for (int i = 0; i < N; ++i) bits |= (lanes[i] & 1u) << i;
+    return bits;
+}
+
+}  // namespace rtlab
