@@ -139,9 +139,22 @@ bool WideBvhAccelerator<W>::intersectSpheres(const TrianglePacket& packet, const
 template <int W>
 Hit WideBvhAccelerator<W>::intersect(const Ray& ray, TraversalStats& stats) const {
     ++stats.rays;
+    if (nodes_.empty()) return Hit{};
+    return hasSpheres_ ? closestHit<true>(ray, stats) : closestHit<false>(ray, stats);
+}
+
+template <int W>
+bool WideBvhAccelerator<W>::occluded(const Ray& ray, TraversalStats& stats) const {
+    ++stats.rays;
+    if (nodes_.empty()) return false;
+    return hasSpheres_ ? anyHit<true>(ray, stats) : anyHit<false>(ray, stats);
+}
+
+template <int W>
+template <bool kSpheres>
+Hit WideBvhAccelerator<W>::closestHit(const Ray& ray, TraversalStats& stats) const {
     Hit hit;
     hit.t = ray.tMax;
-    if (nodes_.empty()) return Hit{};
 
     const WideRay<W> wideRay(ray);
     const ShearedRay shearedRay(ray);
@@ -178,7 +191,7 @@ Hit WideBvhAccelerator<W>::intersect(const Ray& ray, TraversalStats& stats) cons
                 const TrianglePacket& packet = packets_[p];
                 if (PacketHit nearest = shearedRay.closest(packet, hit.t); nearest.lane >= 0)
                     hit = Hit{nearest.hit.t, packet.prim[nearest.lane], nearest.hit.b1, nearest.hit.b2};
-                if (hasSpheres_) intersectSpheres(packet, ray, hit);
+                if constexpr (kSpheres) intersectSpheres(packet, ray, hit);
             }
         }
         // Next waiting child, skipping those that start beyond the closest hit so far.
@@ -195,10 +208,8 @@ Hit WideBvhAccelerator<W>::intersect(const Ray& ray, TraversalStats& stats) cons
 }
 
 template <int W>
-bool WideBvhAccelerator<W>::occluded(const Ray& ray, TraversalStats& stats) const {
-    ++stats.rays;
-    if (nodes_.empty()) return false;
-
+template <bool kSpheres>
+bool WideBvhAccelerator<W>::anyHit(const Ray& ray, TraversalStats& stats) const {
     const WideRay<W> wideRay(ray);
     const ShearedRay shearedRay(ray);
     StackEntry stack[kStackSize<W>];
@@ -216,10 +227,12 @@ bool WideBvhAccelerator<W>::occluded(const Ray& ray, TraversalStats& stats) cons
         uint32_t first = current.ref & ~kLeafFlag;
         stats.primitiveTests += current.primCount;
         for (uint32_t p = first; p < first + packetCount(current.primCount); ++p) {
-            Hit hit;
-            hit.t = ray.tMax;
-            if (shearedRay.anyHit(packets_[p], ray.tMax) || (hasSpheres_ && intersectSpheres(packets_[p], ray, hit)))
-                return true;  // any blocker will do
+            if (shearedRay.anyHit(packets_[p], ray.tMax)) return true;  // any blocker will do
+            if constexpr (kSpheres) {
+                Hit hit;
+                hit.t = ray.tMax;
+                if (intersectSpheres(packets_[p], ray, hit)) return true;
+            }
         }
     }
     return false;

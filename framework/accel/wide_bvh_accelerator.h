@@ -28,6 +28,12 @@ public:
     size_t memoryBytes() const override;
 
 private:
+    // The traversals, compiled twice: with kSpheres false (the scene is all triangles) the
+    // loop makes no calls, so its SIMD registers need not be saved around them.
+    template <bool kSpheres>
+    Hit closestHit(const Ray& ray, TraversalStats& stats) const;
+    template <bool kSpheres>
+    bool anyHit(const Ray& ray, TraversalStats& stats) const;
     // Tests the spheres among a packet's primitives (lanes without a triangle), updating hit;
     // true when one is hit.
     bool intersectSpheres(const TrianglePacket& packet, const Ray& ray, Hit& hit) const;
