@@ -14,11 +14,20 @@ namespace {
 template <int W>
 using Lanes = Simd<float, W>;
 
+// a0's enlargement of the far distance, so that rounding never shrinks a box (Ize 2013,
+// docs/conventions.md).
+constexpr float kFarScale = 1.0f + 2.0f * gamma(3);
+
 // What the W-wide slab test needs per ray, each value broadcast to all lanes.
 template <int W>
 struct WideRay {
     Lanes<W> origin[3];
     Lanes<W> invDirection[3];
+    // The reciprocal times kFarScale, for the far planes. a0 rounds four times and then
+    // scales: (p - o), 1 / d, the product, the product with kFarScale. This rounds four times
+    // with the scale inside; either way the far distance is at least kFarScale (1 - u)^4 > 1
+    // times the exact one, so no box the ray touches is missed.
+    Lanes<W> farInvDirection[3];
     Lanes<W> tMin;
     // Per axis, the plane row the ray enters a box through and the one it leaves through:
     // lower then upper for a positive direction, the other way round for a negative one.
@@ -29,6 +38,7 @@ struct WideRay {
         for (int axis = 0; axis < 3; ++axis) {
             origin[axis] = broadcast<W>(inverse.origin[axis]);
             invDirection[axis] = broadcast<W>(inverse.invDirection[axis]);
+            farInvDirection[axis] = broadcast<W>(inverse.invDirection[axis] * kFarScale);
             bool negative = inverse.dirIsNegative[axis];
             nearRow[axis] = negative ? WideBvhNode<W>::upperRow(axis) : WideBvhNode<W>::lowerRow(axis);
             farRow[axis] = negative ? WideBvhNode<W>::lowerRow(axis) : WideBvhNode<W>::upperRow(axis);
@@ -37,8 +47,9 @@ struct WideRay {
 };
 
 // The slab test of a0 on W boxes at once: per child, where the ray enters its box and whether
-// the segment (tMin, tMax] touches it. Same arithmetic as the scalar test, including the
-// enlarged far distance.
+// the segment (tMin, tMax] touches it. The near distances are a0's arithmetic exactly; the far
+// ones are enlarged as a0 enlarges them, with the factor folded into the reciprocal once per
+// ray (WideRay::farInvDirection).
 template <int W>
 struct ChildHits {
     Lanes<W> tEnter;
@@ -47,12 +58,10 @@ struct ChildHits {
 
 template <int W>
 ChildHits<W> intersectChildren(const WideBvhNode<W>& node, const WideRay<W>& ray, float tMax) {
-    const Lanes<W> farScale = broadcast<W>(1.0f + 2.0f * gamma(3));
     Lanes<W> tNear = ray.tMin, tFar = broadcast<W>(tMax);
     for (int axis = 0; axis < 3; ++axis) {
         Lanes<W> t0 = (load<W>(node.planes[ray.nearRow[axis]]) - ray.origin[axis]) * ray.invDirection[axis];
-        Lanes<W> t1 = (load<W>(node.planes[ray.farRow[axis]]) - ray.origin[axis]) * ray.invDirection[axis];
-        t1 *= farScale;
+        Lanes<W> t1 = (load<W>(node.planes[ray.farRow[axis]]) - ray.origin[axis]) * ray.farInvDirection[axis];
         // A NaN distance (0 * inf: the origin on a slab plane, direction 0 on that axis) fails
         // the comparison and leaves the interval as it was. This is max and min (MAXPS/MINPS).
         tNear = t0 > tNear ? t0 : tNear;
@@ -68,7 +77,7 @@ uint32_t packetCount(uint32_t primCount) {
 
 // A child waiting to be visited.
 struct StackEntry {
-    uint32_t ref;  // interior node index, or kLeafFlag | first primIndices entry
+    uint32_t ref;  // interior node index, or kLeafFlag | first packet
     uint32_t primCount;
     float tEnter;
 };
@@ -78,22 +87,38 @@ struct StackEntry {
 template <int W>
 constexpr int kStackSize = (W - 1) * kMaxBvhDepth + W;
 
-// Writes the children the ray hits to out, farthest first, so the nearest is out[count - 1];
-// returns count. Every child is written and the count advances only past hit ones, so the
-// compaction has no branch to mispredict; then an insertion sort (one or two children are
-// hit at most nodes).
+// The child to visit next at a node whose hit children are the bits of mask (not none): the
+// nearest. The others wait on the stack, the farthest deepest; of equally near children the
+// one in the later slot is visited first. One or two children are hit at most nodes, and
+// those cases take no loop.
 template <int W>
-inline int orderChildren(const WideBvhNode<W>& node, const ChildHits<W>& hits, unsigned mask, StackEntry* out) {
+inline StackEntry nearestChild(const WideBvhNode<W>& node, const ChildHits<W>& hits, unsigned mask, StackEntry* stack,
+                               int& stackSize) {
+    auto entry = [&node](int slot, float tEnter) { return StackEntry{node.child[slot], node.primCount[slot], tEnter}; };
+    int first = std::countr_zero(mask);
+    unsigned rest = mask & (mask - 1);
+    if (rest == 0) return entry(first, 0.0f);  // only waiting children need their entry distance
+
     float tEnter[W];
     std::memcpy(tEnter, &hits.tEnter, sizeof tEnter);  // one store instead of a shuffle per lane
+    int second = std::countr_zero(rest);
+    if ((rest & (rest - 1)) == 0) {
+        bool firstNearer = tEnter[first] < tEnter[second];
+        int nearer = firstNearer ? first : second, farther = firstNearer ? second : first;
+        stack[stackSize++] = entry(farther, tEnter[farther]);
+        return entry(nearer, tEnter[nearer]);
+    }
+    // Three or more: all onto the stack in slot order, an insertion sort, and the top is next.
+    StackEntry* out = stack + stackSize;
     int count = 0;
     for (; mask != 0; mask &= mask - 1) {
         int slot = std::countr_zero(mask);
-        out[count++] = {node.child[slot], node.primCount[slot], tEnter[slot]};
+        out[count++] = entry(slot, tEnter[slot]);
     }
     for (int i = 1; i < count; ++i)
         for (int j = i; j > 0 && out[j - 1].tEnter < out[j].tEnter; --j) std::swap(out[j - 1], out[j]);
-    return count;
+    stackSize += count - 1;
+    return out[count - 1];
 }
 
 }  // namespace
@@ -167,21 +192,8 @@ Hit WideBvhAccelerator<W>::closestHit(const Ray& ray, TraversalStats& stats) con
             const WideBvhNode<W>& node = nodes_[current.ref];
             ++nodeVisits;
             ChildHits<W> hits = intersectChildren<W>(node, wideRay, hit.t);
-            unsigned mask = laneBits<W>(hits.hit);
-            if (mask != 0 && (mask & (mask - 1)) == 0) {
-                // One child hit, the commonest case: it is next, and nothing waits. (Only
-                // waiting children need their entry distance.)
-                int slot = std::countr_zero(mask);
-                current = {node.child[slot], node.primCount[slot], 0.0f};
-                continue;
-            }
-            // Several: they go onto the stack, the nearest on top; it is visited next, the
-            // others wait, farthest deepest.
-            StackEntry* pushed = stack + stackSize;
-            int count = orderChildren<W>(node, hits, mask, pushed);
-            if (count > 0) {
-                stackSize += count - 1;
-                current = pushed[count - 1];
+            if (unsigned mask = laneBits<W>(hits.hit); mask != 0) {
+                current = nearestChild<W>(node, hits, mask, stack, stackSize);
                 continue;
             }
         } else {
@@ -221,7 +233,10 @@ bool WideBvhAccelerator<W>::anyHit(const Ray& ray, TraversalStats& stats) const 
             const WideBvhNode<W>& node = nodes_[current.ref];
             ++stats.nodeVisits;
             ChildHits<W> hits = intersectChildren<W>(node, wideRay, ray.tMax);
-            stackSize += orderChildren<W>(node, hits, laneBits<W>(hits.hit), stack + stackSize);
+            if (unsigned mask = laneBits<W>(hits.hit); mask != 0) {
+                StackEntry nearest = nearestChild<W>(node, hits, mask, stack, stackSize);
+                stack[stackSize++] = nearest;
+            }
             continue;
         }
         uint32_t first = current.ref & ~kLeafFlag;
