@@ -14,6 +14,7 @@
 #include <limits>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 using namespace rtlab;
 
@@ -26,9 +27,10 @@ Scene loadModel(const char* file) {
     return loadGltf(path);
 }
 
-std::unique_ptr<Accelerator> built(const std::string& name, const PrimitiveSet& prims) {
+std::unique_ptr<Accelerator> built(const std::string& name, const PrimitiveSet& prims, int maxLeaf = 4) {
     AcceleratorSpec spec;
     spec.name = name;
+    spec.maxLeaf = maxLeaf;
     auto accel = makeAccelerator(spec);
     accel->build(prims);
     return accel;
@@ -88,10 +90,13 @@ TEST_CASE("the wide traversal finds exactly the binary traversal's hits, with fe
         CAPTURE(file);
         Scene scene = loadModel(file);
         PrimitiveSet prims(scene);
-        for (const char* method : {"4-sah", "4-buckets:12", "4-median", "8-sah", "8-buckets:12"}) {
+        // Leaves of up to 8 primitives fill two triangle packets.
+        for (auto [method, maxLeaf] : {std::pair{"4-sah", 4}, {"4-buckets:12", 4}, {"4-median", 8}, {"8-sah", 4},
+                                       {"8-buckets:12", 4}, {"8-median", 8}}) {
             CAPTURE(method);
-            auto binary = built(std::string("bvh-") + (method + 2), prims);
-            auto wide = built(std::string("bvh") + method, prims);
+            CAPTURE(maxLeaf);
+            auto binary = built(std::string("bvh-") + (method + 2), prims, maxLeaf);
+            auto wide = built(std::string("bvh") + method, prims, maxLeaf);
             for (RayKind kind : {RayKind::Primary, RayKind::Incoherent}) {
                 std::vector<Ray> rays = makeBenchmarkRays(kind, scene.bounds());
                 TraversalStats binaryStats, wideStats;
@@ -109,6 +114,34 @@ TEST_CASE("the wide traversal finds exactly the binary traversal's hits, with fe
                 CHECK(wideStats.primitiveTests <= binaryStats.primitiveTests * 11 / 10);
                 CHECK(wideStats.nodeVisits * 2 < binaryStats.nodeVisits);
             }
+        }
+    }
+}
+
+TEST_CASE("of equally near triangles, the wide traversal keeps the one the binary traversal keeps") {
+    // Six copies of one triangle: one leaf (maxLeaf 8) over two triangle packets. A ray that
+    // hits one copy hits all six at the same t; a loop over the leaf keeps the last.
+    Scene scene;
+    scene.materials.push_back(Material{});
+    scene.triangles.positions = {Vec3(-1.0f, -1.0f, 0.0f), Vec3(1.0f, -1.0f, 0.0f), Vec3(0.0f, 1.0f, 0.0f)};
+    for (int copy = 0; copy < 6; ++copy) {
+        scene.triangles.indices.push_back({0, 1, 2});
+        scene.triangles.material.push_back(0);
+        scene.triangles.smooth.push_back(0);
+    }
+    PrimitiveSet prims(scene);
+    auto binary = built("bvh-median", prims, 8);
+    for (std::string name : {"bvh4-median", "bvh8-median"}) {
+        CAPTURE(name);
+        auto wide = built(name, prims, 8);
+        TraversalStats stats;
+        for (int i = -8; i <= 8; ++i) {
+            float x = 0.05f * i;
+            Ray ray{Vec3(x, -0.2f, 1.0f), Vec3(0.01f * x, 0.02f, -1.0f)};
+            Hit a = binary->intersect(ray, stats), b = wide->intersect(ray, stats);
+            REQUIRE(a.found());
+            CHECK(a.prim == b.prim);
+            CHECK(a.t == b.t);
         }
     }
 }
