@@ -102,7 +102,7 @@ void writeMarkdown(std::ostream& out, const std::vector<ThroughputRecord>& recor
            "builders are single-threaded, so their 2T build column repeats the 1T figure. Embree does not "
            "count work in its release build (–); the wide BVHs (bvh4, bvh8) count a wide node as one visit. "
            "Bytes per triangle: the built structure only (rtlab: 32-byte nodes + 4-byte indices; bvh4/bvh8: "
-           "128/256-byte nodes, indices and a 36-byte copy of each triangle in leaf order; Embree: what "
+           "128/256-byte nodes and the triangles in leaf order, four to a 160-byte packet; Embree: what "
            "its memory monitor saw rtcCommitScene keep). "
            "Mismatches: rays whose hit/miss or t (|Δt| > 1e-4·max(1,t)) differ from Embree MEDIUM, 1T.\n";
 }
