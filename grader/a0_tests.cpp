@@ -6,6 +6,7 @@
 #include "grader/hit_judge.h"
 #include "grader/stress_cases.h"
 #include "grader/test_scenes.h"
+#include "grader/worker/task_inputs.h"
 
 #include <cmath>
 #include <cstdio>
@@ -63,14 +64,11 @@ private:
 // --- Truth tables ---------------------------------------------------------------------------
 
 ChildPhase boxTablePhase(std::shared_ptr<const std::vector<BoxCase>> cases) {
-    return {kStubBox, [cases](ByteWriter& out) {
-                for (const BoxCase& c : *cases) {
-                    float enter = std::numeric_limits<float>::quiet_NaN();
-                    bool hit = intersectBox(c.box, RayInverse(c.ray), c.ray.tMin, c.ray.tMax, &enter);
-                    out.put<uint8_t>(hit);
-                    out.put<float>(enter);
-                }
-            }};
+    std::vector<worker::BoxQuery> queries;
+    for (const BoxCase& c : *cases) queries.push_back({c.box, c.ray});
+    ByteWriter input;
+    input.putVector(queries);
+    return makePhase(kStubBox, worker::kTaskBox, std::move(input));
 }
 
 void scoreBoxTable(const std::vector<BoxCase>& cases, const PhaseOutcome& outcome, TestResult& result) {
@@ -88,16 +86,18 @@ void scoreBoxTable(const std::vector<BoxCase>& cases, const PhaseOutcome& outcom
     tally.finish();
 }
 
+ChildPhase trianglePhase(const std::vector<worker::TriangleQuery>& queries) {
+    ByteWriter input;
+    input.putVector(queries);
+    return makePhase(kStubTriangle, worker::kTaskTriangle, std::move(input));
+}
+
+// Every triangle of every case, each with its case's ray.
 ChildPhase triangleTablePhase(std::shared_ptr<const std::vector<TriangleCase>> cases) {
-    return {kStubTriangle, [cases](ByteWriter& out) {
-                for (const TriangleCase& c : *cases)
-                    for (const auto& v : c.triangles) {
-                        TriangleHit hit{};
-                        bool found = intersectTriangle(c.ray, c.ray.tMax, v[0], v[1], v[2], &hit);
-                        out.put<uint8_t>(found);
-                        out.put<float>(hit.t);
-                    }
-            }};
+    std::vector<worker::TriangleQuery> queries;
+    for (const TriangleCase& c : *cases)
+        for (const auto& v : c.triangles) queries.push_back({c.ray, v[0], v[1], v[2]});
+    return trianglePhase(queries);
 }
 
 void scoreTriangleTable(const std::vector<TriangleCase>& cases, const PhaseOutcome& outcome, TestResult& result) {
@@ -123,14 +123,11 @@ void scoreTriangleTable(const std::vector<TriangleCase>& cases, const PhaseOutco
 }
 
 ChildPhase sphereTablePhase(std::shared_ptr<const std::vector<SphereCase>> cases) {
-    return {kStubSphere, [cases](ByteWriter& out) {
-                for (const SphereCase& c : *cases) {
-                    float t = std::numeric_limits<float>::quiet_NaN();
-                    bool hit = intersectSphere(c.ray, c.ray.tMax, c.centre, c.radius, &t);
-                    out.put<uint8_t>(hit);
-                    out.put<float>(t);
-                }
-            }};
+    std::vector<worker::SphereQuery> queries;
+    for (const SphereCase& c : *cases) queries.push_back({c.ray, c.centre, c.radius});
+    ByteWriter input;
+    input.putVector(queries);
+    return makePhase(kStubSphere, worker::kTaskSphere, std::move(input));
 }
 
 void scoreSphereTable(const std::vector<SphereCase>& cases, const PhaseOutcome& outcome, TestResult& result) {
@@ -186,6 +183,16 @@ struct IzeRays {
     std::vector<Ray> rays;
 };
 
+// Every ray against both boxes; the entry distance is not judged.
+ChildPhase izePhase(const IzeRays& ize) {
+    std::vector<worker::BoxQuery> queries;
+    for (const Ray& ray : ize.rays)
+        for (const Bounds3f& box : ize.boxes) queries.push_back({box, ray});
+    ByteWriter input;
+    input.putVector(queries);
+    return makePhase(kStubBox, worker::kTaskBox, std::move(input));
+}
+
 bool exactSlab(const Bounds3f& box, const Ray& ray) {
     double t0 = ray.tMin, t1 = ray.tMax;
     for (int axis = 0; axis < 3; ++axis) {
@@ -214,13 +221,7 @@ TestGroup slabGroup(uint64_t seed) {
     group.assignment = kA0;
     group.title = "a0 slab test";
     group.phases = {noSetUp(), boxTablePhase(facePlanes), boxTablePhase(flat), boxTablePhase(interval),
-                    {kStubBox, [ize](ByteWriter& out) {
-                         for (const Ray& ray : ize->rays)
-                             for (const Bounds3f& box : ize->boxes) {
-                                 float enter;
-                                 out.put<uint8_t>(intersectBox(box, RayInverse(ray), ray.tMin, ray.tMax, &enter));
-                             }
-                     }}};
+                    izePhase(*ize)};
     group.score = [=](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult a = makeResult(kA0, "a0/slab/face-planes");
         scoreBoxTable(*facePlanes, run.phases[1], a);
@@ -235,6 +236,7 @@ TestGroup slabGroup(uint64_t seed) {
             for (const Ray& ray : ize->rays)
                 for (const Bounds3f& box : ize->boxes) {
                     bool hit = in.get<uint8_t>() != 0;
+                    in.get<float>();
                     ++tally.total;
                     if (!hit && exactSlab(box, ray)) tally.fail("BOX-05 " + describeRay(ray) + ": the ray touches the flat box at z = 5 but was culled");
                 }
@@ -335,6 +337,30 @@ std::vector<OffsetCase> largeOffsetCases(uint64_t seed, int count) {
     return cases;
 }
 
+ChildPhase sharedEdgePhase(const std::vector<SharedEdgeCase>& cases) {
+    std::vector<worker::TriangleQuery> queries;
+    for (const SharedEdgeCase& c : cases)
+        for (const auto* v : {&c.first, &c.second}) queries.push_back({c.ray, (*v)[0], (*v)[1], (*v)[2]});
+    return trianglePhase(queries);
+}
+
+// The nearest hit over the whole icosphere per ray, as a traversal would find it.
+ChildPhase leakPhase(const LeakRays& leak) {
+    const Scene& s = leak.sphere.scene;
+    std::vector<std::array<Vec3, 3>> triangles;
+    for (uint32_t prim = 0; prim < s.triangleCount(); ++prim) triangles.push_back(s.triangleVertices(prim));
+    ByteWriter input;
+    input.putVector(triangles);
+    input.putVector(leak.rays);
+    return makePhase(kStubTriangle, worker::kTaskClosestTriangle, std::move(input));
+}
+
+ChildPhase offsetPhase(const std::vector<OffsetCase>& cases) {
+    std::vector<worker::TriangleQuery> queries;
+    for (const OffsetCase& c : cases) queries.push_back({c.ray, c.triangle[0], c.triangle[1], c.triangle[2]});
+    return trianglePhase(queries);
+}
+
 TestGroup triangleGroup(uint64_t seed) {
     auto all = triangleCases();
     auto regressions = select(all, {"TRI-01", "TRI-02"});
@@ -351,33 +377,7 @@ TestGroup triangleGroup(uint64_t seed) {
     group.title = "a0 triangle test";
     group.phases = {noSetUp(), triangleTablePhase(regressions), triangleTablePhase(edges), triangleTablePhase(degenerate),
                     triangleTablePhase(boundary),
-                    {kStubTriangle, [shared](ByteWriter& out) {
-                         for (const SharedEdgeCase& c : *shared)
-                             for (const auto* v : {&c.first, &c.second}) {
-                                 TriangleHit hit{};
-                                 out.put<uint8_t>(intersectTriangle(c.ray, c.ray.tMax, (*v)[0], (*v)[1], (*v)[2], &hit));
-                                 out.put<float>(hit.t);
-                             }
-                     }},
-                    {kStubTriangle, [leak](ByteWriter& out) {
-                         const Scene& s = leak->sphere.scene;
-                         for (const Ray& ray : leak->rays) {
-                             float closest = kInfinity;
-                             for (uint32_t prim = 0; prim < s.triangleCount(); ++prim) {
-                                 auto v = s.triangleVertices(prim);
-                                 TriangleHit hit{};
-                                 if (intersectTriangle(ray, closest, v[0], v[1], v[2], &hit)) closest = hit.t;
-                             }
-                             out.put<float>(closest);
-                         }
-                     }},
-                    {kStubTriangle, [big, offsets](ByteWriter& out) {
-                         for (const OffsetCase& c : *offsets) {
-                             TriangleHit hit{};
-                             out.put<uint8_t>(intersectTriangle(c.ray, c.ray.tMax, c.triangle[0], c.triangle[1], c.triangle[2], &hit));
-                             out.put<float>(hit.t);
-                         }
-                     }},
+                    sharedEdgePhase(*shared), leakPhase(*leak), offsetPhase(*offsets),
                     triangleTablePhase(big)};
     group.score = [=](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult r1 = makeResult(kA0, "a0/triangle/shared-edge-regressions");

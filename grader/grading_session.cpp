@@ -37,7 +37,7 @@ void mergeSameNamed(std::vector<TestResult>& results) {
     results = std::move(merged);
 }
 
-GradingReport gradeLinkedImplementation(const GradingOptions& options) {
+GradingReport gradeWorker(const GradingOptions& options) {
     auto start = std::chrono::steady_clock::now();
     GradingContext context;
     context.seed = options.seed;
@@ -66,13 +66,15 @@ GradingReport gradeLinkedImplementation(const GradingOptions& options) {
     GradingReport report;
     report.implementation = options.implementation;
     report.seed = options.seed;
+    report.isolation = workerIsolation();
+    WorkerSpec worker{options.workerPath, options.limits};
     TimeoutStrikes strikes;
     bool terminal = options.progress && isatty(STDERR_FILENO);
     for (size_t i = 0; i < groups.size(); ++i) {
         const TestGroup& group = groups[i];
         if (terminal) std::cerr << "\r\033[K[" << i + 1 << "/" << groups.size() << "] " << group.title << std::flush;
         SandboxRun run;
-        if (!group.phases.empty()) run = runSandboxed(group.phases, options.limits, &strikes);
+        if (!group.phases.empty()) run = runSandboxed(worker, group.phases, &strikes);
         size_t before = report.tests.size();
         try {
             group.score(run, report.tests);

@@ -1,6 +1,6 @@
-// One grading run over the implementation linked into this executable (docs/grading.md):
-// builds the test groups of the chosen assignments, runs each in sandboxed children, scores
-// them in this process and applies the rubric.
+// One grading run (docs/grading.md): builds the test groups of the chosen assignments, runs
+// each in sandboxed workers (options.workerPath, which holds the code to grade; this process
+// links none), scores them in this process and applies the rubric.
 #pragma once
 
 #include "grader/grading_report.h"
@@ -19,13 +19,14 @@ struct GradingOptions {
     std::string workDir;     // renders and heat maps
     std::string rubricPath;  // default sourceDir/grader/rubric.json
     std::vector<std::string> assignments;  // empty: all of a0, a1, a2
+    std::string workerPath;  // the worker executable holding the code to grade (grader/worker/)
     SandboxLimits limits;
     bool writeReference = false;  // record SAH costs and work per ray into grader/reference/
     bool progress = true;         // progress lines on stderr when it is a terminal
     std::string implementation;   // what is graded, for the reports
 };
 
-GradingReport gradeLinkedImplementation(const GradingOptions& options);
+GradingReport gradeWorker(const GradingOptions& options);
 
 // Merges results that share a name (one per scene) into one test: passed when all passed,
 // not started when all are, otherwise failed with the first failure's reason; the fraction is

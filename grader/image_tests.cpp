@@ -2,14 +2,14 @@
 // the student's BVH (a0 intersections, a1 median build and ordered traversal) and compared with
 // its POV-Ray reference in scenes/refs/. A scene without a reference, or whose reference is
 // older than the scene, scores 0 with that reason, never a silent pass.
-#include "framework/accel/accelerator.h"
 #include "framework/core/error.h"
 #include "framework/core/sha256.h"
 #include "framework/render/image_compare.h"
 #include "framework/render/image_io.h"
-#include "framework/render/renderer.h"
 #include "framework/scene/gltf_loader.h"
 #include "grader/assignment_tests.h"
+#include "grader/scene_codec.h"
+#include "grader/worker/task_inputs.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -40,33 +40,25 @@ std::string percent(double share) {
 struct ImageJob {
     std::string name;
     Scene scene;
-    std::unique_ptr<PrimitiveSet> primitives;
-    Camera camera;
+    uint32_t camera = 0;  // index into scene.cameras
     Image reference;
     std::string referencePath;
 };
+
+uint32_t cameraIndex(const Scene& scene, const std::string& name) {
+    const Camera& camera = scene.camera(name);  // throws with the list of names when there is none
+    return static_cast<uint32_t>(&camera - scene.cameras.data());
+}
 
 TestGroup renderGroup(std::shared_ptr<ImageJob> job, const std::string& workDir) {
     TestGroup group;
     group.assignment = kImageAssignment;
     group.title = "render " + job->name;
     const std::string stub = std::string("the renderer with --accel ") + kImageAccelerator + " (a0 + a1 functions)";
-    group.phases = {noSetUp(), {stub, [job](ByteWriter& out) {
-                                    AcceleratorSpec spec;
-                                    spec.name = kImageAccelerator;
-                                    auto accelerator = makeAccelerator(spec);
-                                    accelerator->build(*job->primitives);
-                                    RenderSettings settings;
-                                    settings.width = job->reference.width;
-                                    settings.height = job->reference.height;
-                                    settings.threads = 2;
-                                    settings.progress = false;
-                                    RenderResult result = Renderer(job->scene, job->camera, *accelerator).render(settings);
-                                    out.put<int32_t>(result.colour.width);
-                                    out.put<int32_t>(result.colour.height);
-                                    out.put<int32_t>(result.colour.channels);
-                                    out.putVector(result.colour.pixels);
-                                }}};
+    ByteWriter input;
+    writeScene(job->scene, input);
+    input.put(worker::RenderRequest{job->camera, job->reference.width, job->reference.height, 2});
+    group.phases = {noSetUp(), makePhase(stub, worker::kTaskRender, std::move(input))};
     group.score = [job, workDir](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult result = makeResult(kImageAssignment, std::string(kImageAssignment) + "/images/" + job->name);
         if (!failedPhaseResult(run.phases[1], result)) {
@@ -166,13 +158,12 @@ std::vector<TestGroup> imageGroups(GradingContext& context) {
                     throw Error("stale reference: " + file.string() + " changed after " + job->referencePath +
                                 " was rendered (an instructor runs rtlab refs)");
             job->scene = loadGltf(file.string());
-            job->camera = job->scene.camera(entry.value("camera", "camera"));
+            job->camera = cameraIndex(job->scene, entry.value("camera", "camera"));
             job->reference = readImage(job->referencePath);
         } catch (const std::exception& e) {
             groups.push_back(unavailableGroup(name, e.what()));
             continue;
         }
-        job->primitives = std::make_unique<PrimitiveSet>(job->scene);
         groups.push_back(renderGroup(job, context.workDir + "/images"));
     }
     return groups;

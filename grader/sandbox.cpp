@@ -2,141 +2,38 @@
 
 #include "framework/core/error.h"
 #include "grader/system_call_filter.h"
+#include "grader/worker/worker_protocol.h"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <chrono>
-#include <cmath>
 #include <csignal>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
-#include <fstream>
-#include <iostream>
-#include <new>
+#include <grp.h>
 #include <optional>
 #include <poll.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
-#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <thread>
+#include <time.h>
 #include <unistd.h>
 
 namespace rtlab::grader {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+using worker::RecordKind;
 
-// What a child writes on the result pipe: a 13-byte header (kind, phase, payload length)
-// followed by the payload.
-enum class RecordKind : uint8_t { PhaseStart = 1, PhaseData, NotStarted, Failed, OutOfMemory, Forbidden, Done };
-constexpr size_t kHeaderSize = 1 + 4 + 8;
 constexpr uint64_t kMaxPayload = uint64_t(1) << 30;
 constexpr size_t kMaxCapturedOutput = 4096;
-constexpr int kResultFd = 3;  // where the child keeps the result pipe
-// The status a child ends with when student code calls exit(): the handler registered last
-// runs first and ends the process before the grader's own exit handlers (which may wait for
-// threads the child does not have) can run.
-constexpr int kExitCalled = 86;
-
-volatile sig_atomic_t currentPhase = 0;
-
-bool writeAll(int fd, const void* data, size_t size) {
-    const auto* p = static_cast<const uint8_t*>(data);
-    while (size > 0) {
-        ssize_t n = write(fd, p, size);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) return false;
-        p += n;
-        size -= static_cast<size_t>(n);
-    }
-    return true;
-}
-
-// Async-signal-safe (only write()), so the SIGSYS handler can use it.
-void sendRecord(RecordKind kind, uint32_t phase, const void* payload, uint64_t size) {
-    uint8_t header[kHeaderSize];
-    header[0] = static_cast<uint8_t>(kind);
-    std::memcpy(header + 1, &phase, 4);
-    std::memcpy(header + 5, &size, 8);
-    writeAll(kResultFd, header, kHeaderSize);
-    if (size > 0) writeAll(kResultFd, payload, size);
-}
-
-void sendText(RecordKind kind, uint32_t phase, const std::string& text) {
-    sendRecord(kind, phase, text.data(), text.size());
-}
-
-void onForbiddenSystemCall(int, siginfo_t* info, void*) {
-    int32_t number = info->si_syscall;
-    sendRecord(RecordKind::Forbidden, static_cast<uint32_t>(currentPhase), &number, sizeof number);
-    syscall(SYS_exit_group, 125);
-}
-
-// Runs one phase and reports how it ended; true when it completed.
-bool runPhase(const ChildPhase& phase, uint32_t index) {
-    currentPhase = static_cast<sig_atomic_t>(index);
-    sendRecord(RecordKind::PhaseStart, index, nullptr, 0);
-    try {
-        ByteWriter out;
-        phase.run(out);
-        sendRecord(RecordKind::PhaseData, index, out.bytes().data(), out.bytes().size());
-        return true;
-    } catch (const NotImplemented& e) {
-        sendText(RecordKind::NotStarted, index, e.stub);
-    } catch (const std::bad_alloc&) {
-        sendRecord(RecordKind::OutOfMemory, index, nullptr, 0);
-    } catch (const std::exception& e) {
-        sendText(RecordKind::Failed, index, std::string("threw an exception: ") + e.what());
-    } catch (...) {
-        sendText(RecordKind::Failed, index, "threw an exception that is not a std::exception");
-    }
-    return false;
-}
-
-[[noreturn]] void runChild(std::span<const ChildPhase> phases, size_t first, const std::vector<bool>& skip,
-                           const SandboxLimits& limits, int resultFd, int outputFd, uint64_t addressSpaceLimit) {
-    int devNull = open("/dev/null", O_RDONLY);
-    dup2(devNull, STDIN_FILENO);
-    dup2(outputFd, STDOUT_FILENO);
-    dup2(outputFd, STDERR_FILENO);
-    dup2(resultFd, kResultFd);
-    close_range(kResultFd + 1, ~0u, 0);
-
-    rlimit memory{addressSpaceLimit, addressSpaceLimit};
-    rlimit cpu{static_cast<rlim_t>(limits.cpuSeconds), static_cast<rlim_t>(limits.cpuSeconds + 1)};
-    rlimit none{0, 0};
-    setrlimit(RLIMIT_AS, &memory);
-    setrlimit(RLIMIT_CPU, &cpu);
-    setrlimit(RLIMIT_CORE, &none);
-    setrlimit(RLIMIT_FSIZE, &none);
-
-    struct sigaction action {};
-    action.sa_sigaction = onForbiddenSystemCall;
-    action.sa_flags = SA_SIGINFO;
-    sigaction(SIGSYS, &action, nullptr);
-    try {
-        installSystemCallFilter(kResultFd);
-    } catch (const std::exception& e) {
-        sendText(RecordKind::Failed, 0, std::string("the grader could not install its sandbox: ") + e.what());
-        _exit(1);
-    }
-
-    std::atexit([] { _exit(kExitCalled); });
-    if (runPhase(phases[0], 0))
-        for (size_t k = first; k < phases.size(); ++k)
-            if (!skip[k]) runPhase(phases[k], static_cast<uint32_t>(k));
-    sendRecord(RecordKind::Done, 0, nullptr, 0);
-    _exit(0);
-}
-
-uint64_t addressSpaceInUse() {
-    std::ifstream statm("/proc/self/statm");
-    uint64_t pages = 0;
-    statm >> pages;
-    return pages * static_cast<uint64_t>(sysconf(_SC_PAGESIZE));
-}
+constexpr uint64_t kWorkerBaseMiB = 64;  // the worker's own code, stacks and the C runtime
+constexpr uid_t kNobody = 65534;
+// The first record must arrive within this, whatever the phase limits: start-up is static.
+constexpr double kStartSeconds = 2.0;
 
 std::string signalName(int sig) {
     const char* abbreviation = sigabbrev_np(sig);
@@ -149,113 +46,201 @@ std::string formatSeconds(double s) {
     return buffer;
 }
 
-// The parent's side of one child: reads records until the child is done, dies or overruns.
-class ChildSession {
-public:
-    ChildSession(std::span<const ChildPhase> phases, const SandboxLimits& limits, SandboxRun& run)
-        : phases_(phases), limits_(limits), run_(run), outcomes_(phases.size()), reported_(phases.size(), false) {}
+Clock::duration seconds(double s) { return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s)); }
 
-    // Runs phase 0 and the phases in [first, n) that are not skipped.
-    void execute(size_t first, const std::vector<bool>& skip) {
-        int resultPipe[2], outputPipe[2];
-        if (pipe2(resultPipe, O_CLOEXEC) != 0 || pipe2(outputPipe, O_CLOEXEC) != 0)
+// CPU time of a process and all its threads, live and ended, as the kernel counts it (in
+// nanoseconds, unlike the clock ticks of /proc/PID/stat).
+std::optional<double> processCpuSeconds(pid_t pid) {
+    clockid_t clock;
+    timespec now{};
+    if (clock_getcpuclockid(pid, &clock) != 0 || clock_gettime(clock, &now) != 0) return std::nullopt;
+    return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
+}
+
+// What runs in the forked child before the worker image replaces it: only grader code, and
+// only async-signal-safe steps after the filter is built. Never returns.
+[[noreturn]] void startWorker(const WorkerSpec& spec, int requestFd, int resultFd, int outputFd, uint64_t addressSpace) {
+    int filterFd = -1;
+    try {
+        filterFd = exportSystemCallFilter(worker::kResultFd, getpid());
+    } catch (...) {
+        _exit(worker::kExitSandboxFailed);
+    }
+    // Descriptors 0..4 are the request, the output capture (1, 2), the results and the filter.
+    int moved[5];
+    for (int i = 0; i < 5; ++i) moved[i] = fcntl(std::array{requestFd, outputFd, outputFd, resultFd, filterFd}[i], F_DUPFD_CLOEXEC, 10);
+    for (int i = 0; i < 5; ++i)
+        if (moved[i] < 0 || dup2(moved[i], i) != i) _exit(worker::kExitSandboxFailed);
+    close_range(5, ~0u, 0);
+
+    rlimit memory{addressSpace, addressSpace};
+    rlimit cpu{static_cast<rlim_t>(spec.limits.cpuSeconds), static_cast<rlim_t>(spec.limits.cpuSeconds + 1)};
+    rlimit none{0, 0};
+    rlimit files{8, 8};
+    if (setrlimit(RLIMIT_AS, &memory) != 0 || setrlimit(RLIMIT_CPU, &cpu) != 0 || setrlimit(RLIMIT_CORE, &none) != 0 ||
+        setrlimit(RLIMIT_FSIZE, &none) != 0 || setrlimit(RLIMIT_NOFILE, &files) != 0)
+        _exit(worker::kExitSandboxFailed);
+    // A grader running as root hands the worker to nobody: no file of the grader's is its own.
+    if (geteuid() == 0 && (setgroups(0, nullptr) != 0 || setgid(kNobody) != 0 || setuid(kNobody) != 0))
+        _exit(worker::kExitSandboxFailed);
+    prctl(PR_SET_PDEATHSIG, SIGKILL);  // after setuid, which clears it
+    if (getppid() == 1) _exit(worker::kExitSandboxFailed);
+    char name[] = "rtlab-worker";
+    char* argv[] = {name, nullptr};
+    char* envp[] = {nullptr};
+    execve(spec.path.c_str(), argv, envp);
+    _exit(worker::kExitSandboxFailed);
+}
+
+// The grader's side of one worker: streams the phases' requests, reads records until the
+// worker is done, dies or overruns a deadline.
+class WorkerSession {
+public:
+    WorkerSession(const WorkerSpec& spec, std::span<const ChildPhase> phases, SandboxRun& run)
+        : spec_(spec), phases_(phases), run_(run), outcomes_(phases.size()), reported_(phases.size(), false) {}
+
+    // Runs phase 0 and then the phases in order.
+    void execute(std::vector<size_t> order) {
+        order_ = std::move(order);
+        int requestPipe[2], resultPipe[2], outputPipe[2];
+        if (pipe2(requestPipe, O_CLOEXEC) != 0 || pipe2(resultPipe, O_CLOEXEC) != 0 || pipe2(outputPipe, O_CLOEXEC) != 0)
             throw Error(std::string("grader: cannot create a pipe: ") + std::strerror(errno));
-        uint64_t limit = addressSpaceInUse() + (uint64_t(limits_.memoryMiB) << 20);
-        std::cout.flush();
+        uint64_t addressSpace = (kWorkerBaseMiB + uint64_t(spec_.limits.memoryMiB)) << 20;
+        for (size_t k : order_) addressSpace += 2 * phases_[k].input.size();
         std::fflush(nullptr);
         pid_t pid = fork();
         if (pid < 0) throw Error(std::string("grader: cannot fork: ") + std::strerror(errno));
-        if (pid == 0) {
-            close(resultPipe[0]);
-            close(outputPipe[0]);
-            runChild(phases_, first, skip, limits_, resultPipe[1], outputPipe[1], limit);
-        }
+        if (pid == 0) startWorker(spec_, requestPipe[0], resultPipe[1], outputPipe[1], addressSpace);
+        close(requestPipe[0]);
         close(resultPipe[1]);
         close(outputPipe[1]);
         pid_ = pid;
-        phaseStart_ = Clock::now();
-        readUntilDone(resultPipe[0], outputPipe[0]);
+        requestFd_ = requestPipe[1];
+        fcntl(requestFd_, F_SETFL, O_NONBLOCK);
+        startedAt_ = Clock::now();
+        deadline_ = startedAt_ + seconds(kStartSeconds);
+        queueRequest(0);
+        converse(resultPipe[0], outputPipe[0]);
+        if (requestFd_ >= 0) close(requestFd_);
         close(resultPipe[0]);
         close(outputPipe[0]);
-        int status = reap();
-        judgeEnding(status);
+        judgeEnding(reap());
     }
 
     const std::vector<PhaseOutcome>& outcomes() const { return outcomes_; }
     const std::vector<bool>& reported() const { return reported_; }
+    bool finished() const { return done_ && !overran_ && !malformed_; }
 
 private:
-    Clock::time_point deadline() const {
-        return phaseStart_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limits_.wallSeconds));
+    // Queues the request of order_[step], or the end of the request after the last one. Each
+    // phase's deadline starts here and is set once: no record moves it.
+    void queueRequest(size_t step) {
+        step_ = step;
+        if (step >= order_.size()) {
+            put<uint32_t>(worker::kEndOfRequest);
+            deadline_ = Clock::now() + seconds(kStartSeconds);
+            return;
+        }
+        const ChildPhase& phase = phases_[order_[step]];
+        put<uint32_t>(static_cast<uint32_t>(order_[step]));
+        put<uint32_t>(static_cast<uint32_t>(phase.task.size()));
+        pendingRequest_.insert(pendingRequest_.end(), phase.task.begin(), phase.task.end());
+        put<uint64_t>(phase.input.size());
+        pendingRequest_.insert(pendingRequest_.end(), phase.input.begin(), phase.input.end());
+        phaseRequestedAt_ = Clock::now();
+        deadline_ = phaseRequestedAt_ + seconds(spec_.limits.wallSeconds);
+        phaseStarted_ = false;
     }
 
-    void readUntilDone(int resultFd, int outputFd) {
-        pollfd fds[2] = {{resultFd, POLLIN, 0}, {outputFd, POLLIN, 0}};
+    template <typename T>
+    void put(T value) {
+        const auto* p = reinterpret_cast<const uint8_t*>(&value);
+        pendingRequest_.insert(pendingRequest_.end(), p, p + sizeof value);
+    }
+
+    std::optional<size_t> currentPhase() const { return step_ < order_.size() ? std::optional(order_[step_]) : std::nullopt; }
+
+    void converse(int resultFd, int outputFd) {
         bool open[2] = {true, true};
-        while ((open[0] || open[1]) && !malformed_) {
-            auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline() - Clock::now()).count();
+        std::vector<uint8_t> buffer(1 << 16);
+        while ((open[0] || open[1]) && !malformed_ && !done_) {
+            auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline_ - Clock::now()).count();
             if (left <= 0) {
                 overran_ = true;
                 return;
             }
-            for (int i = 0; i < 2; ++i) fds[i].fd = open[i] ? (i == 0 ? resultFd : outputFd) : -1;
-            int ready = poll(fds, 2, static_cast<int>(std::min<long long>(left, 1000)));
+            pollfd fds[3] = {{open[0] ? resultFd : -1, POLLIN, 0},
+                             {open[1] ? outputFd : -1, POLLIN, 0},
+                             {!pendingRequest_.empty() ? requestFd_ : -1, POLLOUT, 0}};
+            int ready = poll(fds, 3, static_cast<int>(std::min<long long>(left, 1000)));
             if (ready < 0 && errno != EINTR) throw Error(std::string("grader: poll failed: ") + std::strerror(errno));
-            uint8_t buffer[65536];
+            if (ready <= 0) continue;
+            if (fds[2].revents) writeRequest();
             for (int i = 0; i < 2; ++i) {
                 if (!open[i] || !(fds[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
-                ssize_t n = read(fds[i].fd, buffer, sizeof buffer);
+                ssize_t n = read(fds[i].fd, buffer.data(), buffer.size());
                 if (n < 0 && errno == EINTR) continue;
                 if (n <= 0) {
                     open[i] = false;
                     continue;
                 }
                 if (i == 0) {
-                    pending_.insert(pending_.end(), buffer, buffer + n);
+                    pendingRecords_.insert(pendingRecords_.end(), buffer.begin(), buffer.begin() + n);
                     parseRecords();
                 } else {
                     size_t room = kMaxCapturedOutput - std::min(kMaxCapturedOutput, run_.output.size());
-                    run_.output.append(reinterpret_cast<char*>(buffer), std::min<size_t>(room, size_t(n)));
+                    run_.output.append(reinterpret_cast<const char*>(buffer.data()), std::min<size_t>(room, size_t(n)));
                 }
             }
         }
     }
 
+    void writeRequest() {
+        ssize_t n = write(requestFd_, pendingRequest_.data(), pendingRequest_.size());
+        if (n > 0) pendingRequest_.erase(pendingRequest_.begin(), pendingRequest_.begin() + n);
+        else if (n < 0 && errno != EAGAIN && errno != EINTR) {  // the worker closed its input
+            close(requestFd_);
+            requestFd_ = -1;
+            pendingRequest_.clear();
+        }
+    }
+
     void parseRecords() {
         size_t position = 0;
-        while (pending_.size() - position >= kHeaderSize) {
-            const uint8_t* header = pending_.data() + position;
-            auto kind = static_cast<RecordKind>(header[0]);
+        while (pendingRecords_.size() - position >= worker::kRecordHeaderSize && !malformed_ && !done_) {
+            const uint8_t* header = pendingRecords_.data() + position;
             uint32_t phase;
             uint64_t size;
             std::memcpy(&phase, header + 1, 4);
             std::memcpy(&size, header + 5, 8);
-            bool known = header[0] >= uint8_t(RecordKind::PhaseStart) && header[0] <= uint8_t(RecordKind::Done);
-            if (!known || phase >= phases_.size() || size > kMaxPayload) {
+            if (header[0] < worker::kFirstRecordKind || header[0] > worker::kLastRecordKind || size > kMaxPayload) {
                 malformed_ = true;
                 return;
             }
-            if (pending_.size() - position - kHeaderSize < size) break;
-            std::span<const uint8_t> payload(header + kHeaderSize, size);
-            handle(kind, phase, payload);
-            position += kHeaderSize + size;
-            if (malformed_) return;
+            if (pendingRecords_.size() - position - worker::kRecordHeaderSize < size) break;
+            handle(static_cast<RecordKind>(header[0]), phase, std::span(header + worker::kRecordHeaderSize, size));
+            position += worker::kRecordHeaderSize + size;
         }
-        pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(position));
+        pendingRecords_.erase(pendingRecords_.begin(), pendingRecords_.begin() + static_cast<std::ptrdiff_t>(position));
     }
 
+    // The records must follow the conversation: the current phase starts once, then ends with
+    // one verdict; Done only after the end of the request. Anything else is malformed.
     void handle(RecordKind kind, uint32_t phase, std::span<const uint8_t> payload) {
+        auto current = currentPhase();
         if (kind == RecordKind::Done) {
-            done_ = true;
+            if (current || !payload.empty()) malformed_ = true;
+            else done_ = true;
+            return;
+        }
+        if (!current || phase != *current) {
+            malformed_ = true;
             return;
         }
         if (kind == RecordKind::PhaseStart) {
-            current_ = phase;
-            phaseStart_ = Clock::now();
-            return;
-        }
-        if (reported_[phase]) {  // a second verdict for one phase: the child writes to our pipe
-            malformed_ = true;
+            if (phaseStarted_ || !payload.empty()) malformed_ = true;
+            phaseStarted_ = true;
+            cpuAtStart_ = processCpuSeconds(pid_);
             return;
         }
         PhaseOutcome& outcome = outcomes_[phase];
@@ -263,6 +248,10 @@ private:
         std::string text(payload.begin(), payload.end());
         switch (kind) {
         case RecordKind::PhaseData:
+            if (!phaseStarted_) {
+                malformed_ = true;
+                return;
+            }
             outcome.status = PhaseStatus::Completed;
             outcome.data.assign(payload.begin(), payload.end());
             break;
@@ -276,7 +265,7 @@ private:
             break;
         case RecordKind::OutOfMemory:
             outcome.status = PhaseStatus::OutOfMemory;
-            outcome.reason = "exceeded the memory limit of " + std::to_string(limits_.memoryMiB) + " MiB in " + stub;
+            outcome.reason = "exceeded the memory limit of " + std::to_string(spec_.limits.memoryMiB) + " MiB in " + stub;
             break;
         case RecordKind::Forbidden: {
             int32_t number = -1;
@@ -288,7 +277,15 @@ private:
         }
         default: malformed_ = true; return;
         }
-        outcome.seconds = std::chrono::duration<double>(Clock::now() - phaseStart_).count();
+        finishPhase(phase);
+        if (kind != RecordKind::Forbidden) queueRequest(step_ + 1);
+    }
+
+    void finishPhase(size_t phase) {
+        PhaseOutcome& outcome = outcomes_[phase];
+        outcome.seconds = std::chrono::duration<double>(Clock::now() - phaseRequestedAt_).count();
+        auto cpu = processCpuSeconds(pid_);
+        if (cpu && cpuAtStart_) outcome.cpuSeconds = *cpu - *cpuAtStart_;
         reported_[phase] = true;
     }
 
@@ -297,41 +294,34 @@ private:
         while (!overran_ && !malformed_) {
             pid_t r = waitpid(pid_, &status, WNOHANG);
             if (r == pid_) return status;
-            if (Clock::now() >= deadline()) {
+            if (Clock::now() >= deadline_) {
                 overran_ = true;
                 break;
             }
-            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
         }
         kill(pid_, SIGKILL);
         waitpid(pid_, &status, 0);
         return status;
     }
 
-    // The phase the child was in when it ended without reporting it, if any. A child that
-    // ends right after reporting a phase (a forbidden call ends it) is blamed for nothing.
-    std::optional<size_t> unfinishedPhase() const {
-        if (!current_) return 0;
-        if (!reported_[*current_]) return current_;
-        return std::nullopt;
-    }
-
     void judgeEnding(int status) {
-        auto phase = unfinishedPhase();
-        if (!phase) return;
+        auto phase = currentPhase();
+        if (!phase || reported_[*phase]) return;
         PhaseOutcome& outcome = outcomes_[*phase];
         const std::string& stub = phases_[*phase].stub;
+        int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
         if (malformed_) {
             outcome.status = PhaseStatus::Failed;
             outcome.reason = "sent malformed results from " + stub;
         } else if (overran_) {
             outcome.status = PhaseStatus::TimedOut;
-            outcome.reason = "timed out after " + formatSeconds(limits_.wallSeconds) + " s in " + stub;
+            outcome.reason = "timed out after " + formatSeconds(spec_.limits.wallSeconds) + " s in " + stub;
         } else if (WIFSIGNALED(status)) {
             int sig = WTERMSIG(status);
             if (sig == SIGXCPU || sig == SIGKILL) {
                 outcome.status = PhaseStatus::TimedOut;
-                outcome.reason = "used more than " + std::to_string(limits_.cpuSeconds) + " s of CPU time in " + stub;
+                outcome.reason = "used more than " + std::to_string(spec_.limits.cpuSeconds) + " s of CPU time in " + stub;
             } else if (sig == SIGSYS) {
                 outcome.status = PhaseStatus::Forbidden;
                 outcome.reason = "made a forbidden system call in " + stub;
@@ -339,29 +329,31 @@ private:
                 outcome.status = PhaseStatus::Crashed;
                 outcome.reason = "crashed with " + signalName(sig) + " in " + stub;
             }
+        } else if (code == worker::kExitSandboxFailed) {
+            outcome.status = PhaseStatus::Failed;
+            outcome.reason = "the worker " + spec_.path + " could not be started in its sandbox";
         } else {
             outcome.status = PhaseStatus::NoResults;
-            int code = WEXITSTATUS(status);
-            outcome.reason = "child exited without results (" +
-                             (code == kExitCalled ? std::string("it called exit()") : "exit status " + std::to_string(code)) + ") in " + stub;
+            outcome.reason = "the worker exited without results (" +
+                             (code == worker::kExitCalled ? std::string("it called exit()") : "exit status " + std::to_string(code)) +
+                             ") in " + stub;
         }
-        outcome.seconds = std::chrono::duration<double>(Clock::now() - phaseStart_).count();
-        reported_[*phase] = true;
+        finishPhase(*phase);
     }
 
-public:
-    bool finished() const { return done_ && !overran_ && !malformed_; }
-
-private:
+    const WorkerSpec& spec_;
     std::span<const ChildPhase> phases_;
-    const SandboxLimits& limits_;
     SandboxRun& run_;
     std::vector<PhaseOutcome> outcomes_;
     std::vector<bool> reported_;
-    std::vector<uint8_t> pending_;
+    std::vector<size_t> order_;
+    size_t step_ = 0;
+    std::vector<uint8_t> pendingRequest_, pendingRecords_;
     pid_t pid_ = -1;
-    Clock::time_point phaseStart_;
-    std::optional<size_t> current_;
+    int requestFd_ = -1;
+    Clock::time_point startedAt_, phaseRequestedAt_, deadline_;
+    std::optional<double> cpuAtStart_;
+    bool phaseStarted_ = false;
     bool done_ = false;
     bool overran_ = false;
     bool malformed_ = false;
@@ -374,7 +366,10 @@ bool TimeoutStrikes::exhausted(const std::string& stub) const {
     return it != counts_.end() && it->second >= kLimit;
 }
 
-SandboxRun runSandboxed(std::span<const ChildPhase> phases, const SandboxLimits& limits, TimeoutStrikes* strikes) {
+SandboxRun runSandboxed(const WorkerSpec& worker, std::span<const ChildPhase> phases, TimeoutStrikes* strikes) {
+    const SandboxLimits& limits = worker.limits;
+    // A worker that ends while the grader still writes its request must not end the grader.
+    std::signal(SIGPIPE, SIG_IGN);
     SandboxRun run;
     run.phases.resize(phases.size());
     std::vector<bool> have(phases.size(), false), skipped(phases.size(), false);
@@ -384,44 +379,63 @@ SandboxRun runSandboxed(std::span<const ChildPhase> phases, const SandboxLimits&
             run.phases[k] = PhaseOutcome{PhaseStatus::TimedOut, {},
                                          "not run: " + phases[k].stub + " already timed out " + std::to_string(TimeoutStrikes::kLimit) +
                                              " times (limit " + formatSeconds(limits.wallSeconds) + " s per test)",
-                                         0.0};
+                                         0.0, 0.0};
         }
     if (skipped[0]) {
         for (size_t k = 1; k < phases.size(); ++k) run.phases[k] = run.phases[0];
         return run;
     }
-    size_t first = 1;
     while (true) {
-        ChildSession child(phases, limits, run);
-        child.execute(first, skipped);
+        std::vector<size_t> order = {0};
+        for (size_t k = 1; k < phases.size(); ++k)
+            if (!have[k]) order.push_back(k);
+        WorkerSession session(worker, phases, run);
+        session.execute(order);
         for (size_t k = 0; k < phases.size(); ++k)
-            if (child.reported()[k] && !have[k]) {
-                run.phases[k] = child.outcomes()[k];
+            if (session.reported()[k] && !have[k]) {
+                run.phases[k] = session.outcomes()[k];
                 have[k] = true;
             }
         // Without the set-up nothing else can run: every phase shares its verdict.
-        const PhaseOutcome& setup = child.reported()[0] ? child.outcomes()[0] : run.phases[0];
+        const PhaseOutcome& setup = session.reported()[0] ? session.outcomes()[0] : run.phases[0];
         if (setup.status != PhaseStatus::Completed) {
             for (size_t k = 1; k < phases.size(); ++k)
                 if (!have[k]) {
-                    run.phases[k] = PhaseOutcome{setup.status, {}, setup.reason, 0.0};
+                    run.phases[k] = PhaseOutcome{setup.status, {}, setup.reason, 0.0, 0.0};
                     have[k] = true;
                 }
             break;
         }
-        // Phases run in order, so the next child starts at the first one without a verdict.
-        if (child.finished()) break;
-        auto next = std::find(have.begin() + 1, have.end(), false);
-        if (next == have.end()) break;
-        first = static_cast<size_t>(next - have.begin());
+        // A worker that ended early costs only its current phase: the next one repeats the
+        // set-up and goes on with the first phase without a verdict.
+        if (session.finished() || std::find(have.begin() + 1, have.end(), false) == have.end()) break;
+        // A worker that gave no new verdict at all cannot make progress: stop rather than loop.
+        bool progressed = false;
+        for (size_t k = 1; k < phases.size(); ++k) progressed |= session.reported()[k];
+        if (!progressed) {
+            for (size_t k = 1; k < phases.size(); ++k)
+                if (!have[k]) {
+                    run.phases[k] = PhaseOutcome{PhaseStatus::NoResults, {}, "the worker ended without results in " + phases[k].stub, 0.0, 0.0};
+                    have[k] = true;
+                }
+            break;
+        }
     }
     for (size_t k = 0; k < phases.size(); ++k) {
-        if (!have[k]) run.phases[k] = PhaseOutcome{PhaseStatus::NoResults, {}, "child exited without results in " + phases[k].stub, 0.0};
+        if (!have[k]) run.phases[k] = PhaseOutcome{PhaseStatus::NoResults, {}, "the worker ended without results in " + phases[k].stub, 0.0, 0.0};
         // A phase that inherited the set-up's timeout did not time out itself.
         bool ownVerdict = k == 0 || run.phases[0].status == PhaseStatus::Completed;
         if (strikes && ownVerdict && !skipped[k] && run.phases[k].status == PhaseStatus::TimedOut) strikes->record(phases[k].stub);
     }
     return run;
+}
+
+std::string workerIsolation() {
+    std::string isolation = "student code runs only in a separate, statically linked worker image holding no expected answers; "
+                            "a seccomp filter loaded at its first instruction (no files, processes, network or signals to others); "
+                            "CPU, memory, file-size and descriptor limits; wall-clock deadlines per phase";
+    isolation += geteuid() == 0 ? "; the worker runs as the unprivileged user nobody" : "; the worker runs as the grader's own user";
+    return isolation;
 }
 
 const char* phaseStatusName(PhaseStatus status) {

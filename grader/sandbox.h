@@ -1,14 +1,15 @@
-// Runs student code in forked children (docs/grading.md, "Isolation"). The parent has loaded
-// the scene and prepared the inputs; each child sets a CPU-time and an address-space limit,
-// installs the system-call filter, then runs the phases of one test group and sends their raw
-// results over a pipe. The parent enforces a wall-clock limit per phase, turns every way a
-// child can end into a one-line verdict, and never runs student code itself.
+// Runs student code in worker processes (docs/grading.md, "Isolation and trust"). A worker is
+// a fresh, statically linked image (grader/worker/) that holds the student's code and none of
+// the grader's answers; it loads the grader's system-call filter at its first instruction and
+// runs with CPU, memory and file limits, as an unprivileged user when the grader is root. The
+// grader streams it one phase at a time, reads raw results with bounds checks, enforces wall-
+// clock deadlines that nothing the worker sends can extend, turns every way a worker can end
+// into a one-line verdict, and never runs student code itself.
 #pragma once
 
 #include "grader/wire_format.h"
 
 #include <cstdint>
-#include <functional>
 #include <map>
 #include <span>
 #include <string>
@@ -18,16 +19,25 @@ namespace rtlab::grader {
 
 struct SandboxLimits {
     double wallSeconds = 5.0;  // per phase
-    int cpuSeconds = 30;        // per child, all threads together
-    int memoryMiB = 512;        // on top of what the grader itself has mapped
+    int cpuSeconds = 30;        // per worker, all threads together
+    int memoryMiB = 512;        // address space of a worker beyond its inputs
 };
 
-// One step of a child's work. It calls student code (stub names it in verdicts) and writes
-// raw results only: hits, structures, values. Phase 0 of a group is the set-up the others
-// need (typically the build); it runs in every child of the group.
+// The executable that runs the student's code (rtlab-worker, rtlab-worker-solution, or the
+// one built from a submission) and its limits.
+struct WorkerSpec {
+    std::string path;
+    SandboxLimits limits;
+};
+
+// One step of a worker's work: a task of grader/worker/task_inputs.h with its input. It calls
+// student code (stub names it in verdicts) and returns raw results only: hits, structures,
+// values. Phase 0 of a group is the set-up the others need (typically the build); it runs in
+// every worker of the group.
 struct ChildPhase {
     std::string stub;  // e.g. "a1 buildBvh (assignments/a1_bvh/bvh_build.cpp)"
-    std::function<void(ByteWriter&)> run;
+    std::string task;
+    std::vector<uint8_t> input;
 };
 
 enum class PhaseStatus {
@@ -45,12 +55,13 @@ struct PhaseOutcome {
     PhaseStatus status = PhaseStatus::NoResults;
     std::vector<uint8_t> data;
     std::string reason;  // one line, for anything but Completed
-    double seconds = 0.0;
+    double seconds = 0.0;     // wall clock, from the request to the verdict
+    double cpuSeconds = 0.0;  // the worker's CPU time (all threads) while the phase ran, as the kernel counted it
 };
 
 struct SandboxRun {
     std::vector<PhaseOutcome> phases;
-    std::string output;  // what the student code printed (first few KiB)
+    std::string output;  // raw bytes the student code printed (first few KiB); escape before showing
 };
 
 // Counts wall-clock timeouts per stub across a grading run, so a stub that hangs on every
@@ -68,7 +79,10 @@ private:
 // Runs every phase. When a child dies in phase k > 0, a new child runs the set-up again and
 // continues with phase k + 1, so one crash costs only the tests that depend on that phase.
 // Phases whose stub has exhausted its strikes are reported as timed out without running.
-SandboxRun runSandboxed(std::span<const ChildPhase> phases, const SandboxLimits& limits, TimeoutStrikes* strikes = nullptr);
+SandboxRun runSandboxed(const WorkerSpec& worker, std::span<const ChildPhase> phases, TimeoutStrikes* strikes = nullptr);
+
+// What the worker's isolation consists of on this machine, for the reports.
+std::string workerIsolation();
 
 const char* phaseStatusName(PhaseStatus status);
 

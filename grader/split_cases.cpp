@@ -1,7 +1,5 @@
 #include "grader/split_cases.h"
 
-#include "framework/interface/a1_bvh.h"
-#include "framework/interface/a2_sah.h"
 
 #include <algorithm>
 #include <memory>
@@ -123,26 +121,13 @@ TestGroup splitCaseGroup(const std::string& assignment, const std::string& testN
     TestGroup group;
     group.assignment = assignment;
     group.title = testName;
-    group.phases = {noSetUp(), {functionStub(shared->front().function), [shared](ByteWriter& out) {
-                                    for (const SplitCase& c : *shared) {
-                                        // Handed over in reverse order, so a function must really order them.
-                                        std::vector<BuildPrimitive> prims;
-                                        for (uint32_t i = static_cast<uint32_t>(c.boxes.size()); i-- > 0;)
-                                            prims.push_back(BuildPrimitive{c.boxes[i], c.boxes[i].centre(), i});
-                                        NodeInfo node = describeNode(prims);
-                                        std::span<BuildPrimitive> span(prims);
-                                        uint32_t k = 0;
-                                        switch (c.function) {
-                                        case SplitFunction::Median: k = splitMedian(span, node); break;
-                                        case SplitFunction::Middle: k = splitMiddle(span, node); break;
-                                        case SplitFunction::EqualCounts: k = splitEqualCounts(span, node); break;
-                                        case SplitFunction::SahSweep: k = splitSahSweep(span, node, c.options); break;
-                                        case SplitFunction::SahBuckets: k = splitSahBuckets(span, node, c.options); break;
-                                        }
-                                        out.put<uint32_t>(k);
-                                        for (const BuildPrimitive& p : prims) out.put<uint32_t>(p.index);
-                                    }
-                                }}};
+    ByteWriter input;
+    input.put<uint64_t>(shared->size());
+    for (const SplitCase& c : *shared) {
+        input.put(worker::SplitCall{c.function, c.options});
+        input.putVector(c.boxes);
+    }
+    group.phases = {noSetUp(), makePhase(functionStub(shared->front().function), worker::kTaskSplit, std::move(input))};
     group.score = [assignment, testName, shared](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult result = makeResult(assignment, testName);
         if (!failedPhaseResult(run.phases[1], result)) {

@@ -5,6 +5,8 @@
 // float implementation computes is exact and ties are real ties.
 #pragma once
 
+#include "grader/worker/task_inputs.h"
+
 #include "framework/interface/bvh.h"
 #include "grader/test_group.h"
 
@@ -13,7 +15,7 @@
 
 namespace rtlab::grader {
 
-enum class SplitFunction { Median, Middle, EqualCounts, SahSweep, SahBuckets };
+using worker::SplitFunction;
 
 struct SplitCase {
     std::string id;

@@ -11,6 +11,7 @@
 #include <sys/ioctl.h>
 #include <unistd.h>
 #include <fcntl.h>
+#include <sys/mman.h>
 
 namespace rtlab::grader {
 namespace {
@@ -27,8 +28,14 @@ public:
     void allow(int call) { add(SCMP_ACT_ALLOW, call, {}); }
     void allowIf(int call, scmp_arg_cmp condition) { add(SCMP_ACT_ALLOW, call, {condition}); }
     void fail(int call, int error) { add(SCMP_ACT_ERRNO(error), call, {}); }
-    void load() {
-        if (seccomp_load(context_) != 0) throw std::runtime_error("seccomp_load failed");
+    int exportToMemoryFile() {
+        int fd = memfd_create("rtlab-seccomp", MFD_CLOEXEC);
+        if (fd < 0) throw std::runtime_error("memfd_create failed");
+        if (seccomp_export_bpf(context_, fd) != 0 || lseek(fd, 0, SEEK_SET) != 0) {
+            close(fd);
+            throw std::runtime_error("seccomp_export_bpf failed");
+        }
+        return fd;
     }
 
 private:
@@ -42,7 +49,7 @@ private:
 
 }  // namespace
 
-void installSystemCallFilter(int resultFd) {
+int exportSystemCallFilter(int resultFd, int workerPid) {
     Filter filter;
     // Memory, time, threads' synchronisation and ending the process.
     for (int call : {SCMP_SYS(brk), SCMP_SYS(mmap), SCMP_SYS(munmap), SCMP_SYS(mremap), SCMP_SYS(mprotect),
@@ -51,8 +58,13 @@ void installSystemCallFilter(int resultFd) {
                      SCMP_SYS(clock_gettime), SCMP_SYS(clock_getres), SCMP_SYS(gettimeofday), SCMP_SYS(time),
                      SCMP_SYS(nanosleep), SCMP_SYS(clock_nanosleep), SCMP_SYS(getrandom),
                      SCMP_SYS(rt_sigreturn), SCMP_SYS(rt_sigprocmask), SCMP_SYS(sigaltstack),
-                     SCMP_SYS(exit), SCMP_SYS(exit_group), SCMP_SYS(read), SCMP_SYS(close), SCMP_SYS(fstat)})
+                     SCMP_SYS(exit), SCMP_SYS(exit_group), SCMP_SYS(read), SCMP_SYS(close), SCMP_SYS(fstat),
+                     // the C runtime's start-up in a static program: thread pointer, thread id
+                     SCMP_SYS(arch_prctl), SCMP_SYS(set_tid_address)})
         filter.allow(call);
+    // Start-up looks for its own file name ($ORIGIN); there is nothing to find.
+    filter.fail(SCMP_SYS(readlink), ENOENT);
+    filter.fail(SCMP_SYS(readlinkat), ENOENT);
     // Writing: only the output capture (stdout, stderr) and the result pipe.
     for (int fd : {STDOUT_FILENO, STDERR_FILENO, resultFd}) {
         filter.allowIf(SCMP_SYS(write), SCMP_A0(SCMP_CMP_EQ, static_cast<scmp_datum_t>(fd)));
@@ -66,7 +78,7 @@ void installSystemCallFilter(int resultFd) {
     filter.allowIf(SCMP_SYS(clone), SCMP_A0(SCMP_CMP_MASKED_EQ, CLONE_THREAD, CLONE_THREAD));
     filter.fail(SCMP_SYS(clone3), ENOSYS);
     // Signals to itself only (abort() raises SIGABRT), and no handler that could hide SIGSYS.
-    auto self = static_cast<scmp_datum_t>(getpid());
+    auto self = static_cast<scmp_datum_t>(workerPid);
     filter.allowIf(SCMP_SYS(kill), SCMP_A0(SCMP_CMP_EQ, self));
     filter.allowIf(SCMP_SYS(tgkill), SCMP_A0(SCMP_CMP_EQ, self));
     filter.allowIf(SCMP_SYS(rt_sigaction), SCMP_A0(SCMP_CMP_NE, SIGSYS));
@@ -74,7 +86,7 @@ void installSystemCallFilter(int resultFd) {
     filter.allowIf(SCMP_SYS(prlimit64), SCMP_A2(SCMP_CMP_EQ, 0));
     // isatty() on the output capture.
     filter.fail(SCMP_SYS(ioctl), ENOTTY);
-    filter.load();
+    return filter.exportToMemoryFile();
 }
 
 std::string systemCallName(int number) {

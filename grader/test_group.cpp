@@ -1,9 +1,15 @@
 #include "grader/test_group.h"
 
+#include "grader/worker/task_inputs.h"
+
 namespace rtlab::grader {
 
 ChildPhase noSetUp() {
-    return ChildPhase{"the grader's set-up", [](ByteWriter&) {}};
+    return ChildPhase{"the grader's set-up", worker::kTaskNone, {}};
+}
+
+ChildPhase makePhase(std::string stub, std::string task, ByteWriter input) {
+    return ChildPhase{std::move(stub), std::move(task), std::move(input.bytes())};
 }
 
 bool failedPhaseResult(const PhaseOutcome& outcome, TestResult& result) {

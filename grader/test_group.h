@@ -32,13 +32,15 @@ struct TestGroup {
     std::string assignment;  // "a0"
     std::string title;       // for progress lines
     std::vector<ChildPhase> phases;
-    // Appends one TestResult per test of the group. Runs in the parent after the child ended,
-    // so nothing it computes (oracle answers) is visible to the child.
+    // Appends one TestResult per test of the group. Runs in the grader after the worker ended;
+    // the worker never sees what it computes or the expected answers it captures.
     std::function<void(const SandboxRun&, std::vector<TestResult>&)> score;
 };
 
 // A phase 0 for groups whose tests need no shared set-up.
 ChildPhase noSetUp();
+// A phase that runs worker task `task` (grader/worker/task_inputs.h) on `input`.
+ChildPhase makePhase(std::string stub, std::string task, ByteWriter input);
 
 // The verdict for a test whose phase did not complete: "not started" for NotImplemented,
 // otherwise failed with the sandbox's one-line reason. Returns false when the phase completed.

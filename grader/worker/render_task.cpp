@@ -1,0 +1,33 @@
+// A whole render with the student's a0 intersections and a1 median BVH, for the image tests.
+#include "framework/accel/bvh_accelerator.h"
+#include "framework/render/renderer.h"
+#include "grader/scene_codec.h"
+#include "grader/worker/task_inputs.h"
+#include "grader/worker/worker_tasks.h"
+
+namespace rtlab::grader::worker {
+
+void runRender(ByteReader& input, ByteWriter& output, WorkerState& state) {
+    state.scene = readScene(input);
+    auto request = input.get<RenderRequest>();
+    if (request.camera >= state.scene.cameras.size() || request.width <= 0 || request.height <= 0 || request.width > 8192 ||
+        request.height > 8192)
+        throw WireError("a render request out of range");
+    state.primitives = std::make_unique<PrimitiveSet>(state.scene);
+    BvhOptions options;
+    options.method = SplitMethod::Median;
+    BvhAccelerator accelerator(options, false);
+    accelerator.build(*state.primitives);
+    RenderSettings settings;
+    settings.width = request.width;
+    settings.height = request.height;
+    settings.threads = request.threads;
+    settings.progress = false;
+    RenderResult result = Renderer(state.scene, state.scene.cameras[request.camera], accelerator).render(settings);
+    output.put<int32_t>(result.colour.width);
+    output.put<int32_t>(result.colour.height);
+    output.put<int32_t>(result.colour.channels);
+    output.putVector(result.colour.pixels);
+}
+
+}  // namespace rtlab::grader::worker
