@@ -17,6 +17,7 @@ struct GradingReport {
     double seconds = 0.0;
     std::vector<TestResult> tests;
     std::string studentOutput;  // what student code printed (first few KiB)
+    std::string isolation;      // how student code was isolated, as the sandbox and the build report it
 
     double score() const;
     double maxScore() const;
@@ -24,6 +25,11 @@ struct GradingReport {
 
 // The text a report shows for a test: its reason and detail lines.
 std::string testOutput(const TestResult& test);
+
+// The report with every text field passed through escapeUntrusted (grader/untrusted_text.h):
+// names, reasons and detail lines as one line each, student output with its line breaks.
+// Scores, images' file paths and timings are unchanged. Every writer below starts with it.
+GradingReport displaySafe(const GradingReport& report);
 
 void printTerminalReport(const GradingReport& report, std::ostream& out, bool colour);
 // The JSON report: score, max_score, seed, execution_time, implementation and

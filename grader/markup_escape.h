@@ -1,23 +1,25 @@
 // Escaping text (student output, messages) for the HTML and JUnit XML reports.
 #pragma once
 
+#include "grader/untrusted_text.h"
+
 #include <string>
 
 namespace rtlab::grader {
 
-// Replaces & < > " by entities and drops control characters other than newline and tab, which
-// XML 1.0 does not allow and which student output may contain.
+// escapeUntrusted (so no byte XML 1.0 forbids and no invalid UTF-8 remains; newline and tab
+// kept), then & < > " ' as entities.
 inline std::string escapeMarkup(const std::string& text) {
-    std::string out;
-    out.reserve(text.size());
-    for (char c : text) {
+    std::string safe = escapeUntrusted(text, TextLayout::Lines), out;
+    out.reserve(safe.size());
+    for (char c : safe) {
         switch (c) {
         case '&': out += "&amp;"; break;
         case '<': out += "&lt;"; break;
         case '>': out += "&gt;"; break;
         case '"': out += "&quot;"; break;
-        default:
-            if (static_cast<unsigned char>(c) >= 0x20 || c == '\n' || c == '\t') out += c;
+        case '\'': out += "&#39;"; break;
+        default: out += c;
         }
     }
     return out;

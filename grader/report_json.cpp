@@ -20,6 +20,12 @@ void writeText(const std::string& path, const std::string& text) {
     if (!out) throw Error(path + ": cannot write the report");
 }
 
+// displaySafe has made every string valid UTF-8; replacing what is not is only the guard that
+// dump() can never throw while a report is written.
+std::string dumped(const nlohmann::ordered_json& json) {
+    return json.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+}
+
 TestStatus parseStatus(const std::string& s) {
     if (s == "passed") return TestStatus::Passed;
     if (s == "not started") return TestStatus::NotStarted;
@@ -28,7 +34,8 @@ TestStatus parseStatus(const std::string& s) {
 
 }  // namespace
 
-void writeJsonReport(const GradingReport& report, const std::string& path) {
+void writeJsonReport(const GradingReport& untrusted, const std::string& path) {
+    const GradingReport report = displaySafe(untrusted);
     nlohmann::ordered_json json;
     json["score"] = report.score();
     json["max_score"] = report.maxScore();
@@ -53,7 +60,7 @@ void writeJsonReport(const GradingReport& report, const std::string& path) {
                                  {"images", images},
                                  {"seconds", t.seconds}});
     }
-    writeText(path, json.dump(2) + "\n");
+    writeText(path, dumped(json));
 }
 
 GradingReport readJsonReport(const std::string& path) {
@@ -88,7 +95,8 @@ GradingReport readJsonReport(const std::string& path) {
     return report;
 }
 
-void writeGradescopeResults(const GradingReport& report, const std::string& path) {
+void writeGradescopeResults(const GradingReport& untrusted, const std::string& path) {
+    const GradingReport report = displaySafe(untrusted);
     nlohmann::ordered_json json;
     json["score"] = report.score();
     json["execution_time"] = report.seconds;
@@ -114,7 +122,7 @@ void writeGradescopeResults(const GradingReport& report, const std::string& path
                                  {"visibility", t.visibility},
                                  {"tags", {t.assignment}}});
     }
-    writeText(path, json.dump(2) + "\n");
+    writeText(path, dumped(json));
 }
 
 }  // namespace rtlab::grader

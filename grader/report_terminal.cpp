@@ -1,6 +1,7 @@
 // The terminal table: one line per test (status, points, one-line reason), a subtotal per
 // assignment and the total.
 #include "grader/grading_report.h"
+#include "grader/untrusted_text.h"
 
 #include <cstdio>
 #include <map>
@@ -27,7 +28,8 @@ std::string points(double score, double max) {
 
 }  // namespace
 
-void printTerminalReport(const GradingReport& report, std::ostream& out, bool colour) {
+void printTerminalReport(const GradingReport& untrusted, std::ostream& out, bool colour) {
+    const GradingReport report = displaySafe(untrusted);
     size_t nameWidth = 4;
     for (const TestResult& t : report.tests) nameWidth = std::max(nameWidth, t.name.size());
     auto pad = [](std::string s, size_t width) {
@@ -44,7 +46,7 @@ void printTerminalReport(const GradingReport& report, std::ostream& out, bool co
             current = t.assignment;
         }
         std::string reason = t.reason;
-        if (reason.size() > kReasonWidth) reason = reason.substr(0, kReasonWidth - 3) + "...";
+        if (reason.size() > kReasonWidth) reason = truncateUtf8(reason, kReasonWidth - 3) + "...";
         std::string status = pad(testStatusName(t.status), 11);
         if (colour) status = statusColour(t.status) + status + "\033[0m";
         out << pad(t.name, nameWidth) << "  " << status << "  " << points(t.score, t.maxScore) << "  " << reason << "\n";
