@@ -4,7 +4,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <fstream>
 
 namespace rtlab::grader {
@@ -44,6 +46,12 @@ Rubric Rubric::load(const std::string& path) {
             if (!(r.points >= 0)) throw Error(path + ": rule \"" + r.pattern + "\" has negative points");
             rubric.rules_.push_back(r);
         }
+        if (json.contains("precision")) {
+            const auto& precision = json.at("precision");
+            if (!precision.is_number_integer() || precision.get<int>() < 0 || precision.get<int>() > 6)
+                throw Error(path + ": \"precision\" must be a whole number of decimals from 0 to 6");
+            rubric.precision_ = precision.get<int>();
+        }
     } catch (const nlohmann::json::exception& e) {
         throw Error(path + ": malformed rubric (" + e.what() + ")");
     }
@@ -59,9 +67,41 @@ void Rubric::apply(std::vector<TestResult>& results) const {
                 result.visibility = rule.visibility;
                 break;
             }
-        // Rounded to 1/100 point so reports add up to what they print.
-        result.score = std::round(100.0 * result.maxScore * result.fraction) / 100.0;
+        result.score = round(result.maxScore * result.fraction);
     }
+}
+
+// Rounded so that reports and CSVs add up to what they print.
+double Rubric::round(double points) const {
+    double scale = std::pow(10.0, precision_);
+    return std::round(points * scale) / scale;
+}
+
+std::vector<TestResult> Rubric::applyToDefined(const std::vector<TestResult>& defined, const std::vector<TestResult>& reported,
+                                               const std::string& missingReason) const {
+    std::map<std::string, const TestResult*> byName;
+    for (const TestResult& r : reported) byName.try_emplace(r.name, &r);
+    std::vector<TestResult> results;
+    for (const TestResult& d : defined) {
+        auto it = byName.find(d.name);
+        if (it == byName.end()) {
+            TestResult missing = d;
+            missing.status = TestStatus::Failed;
+            missing.fraction = 0.0;
+            missing.reason = missingReason;
+            missing.details.clear();
+            missing.images.clear();
+            results.push_back(missing);
+            continue;
+        }
+        TestResult r = *it->second;
+        r.assignment = d.assignment;
+        r.fraction = std::isfinite(r.fraction) ? std::clamp(r.fraction, 0.0, 1.0) : 0.0;
+        if (r.status == TestStatus::Passed && r.fraction < 1.0) r.status = TestStatus::Failed;
+        results.push_back(r);
+    }
+    apply(results);
+    return results;
 }
 
 }  // namespace rtlab::grader

@@ -21,12 +21,24 @@ public:
     // Throws rtlab::Error naming the file and the problem for a malformed rubric.
     static Rubric load(const std::string& path);
 
-    // Sets maxScore, score (fraction x points) and visibility of every result. A test no rule
-    // matches is worth 0 points (and is still reported).
+    // Sets maxScore, score (fraction x points, rounded to precision()) and visibility of every
+    // result. A test no rule matches is worth 0 points (and is still reported).
     void apply(std::vector<TestResult>& results) const;
+
+    // The results for exactly the tests the grader defines, in its order, with the rubric
+    // applied: a reported result whose name is not in `defined` is dropped (a name read back
+    // from a report or a worker earns nothing), a defined test nobody reported fails with
+    // missingReason. Fractions are clamped to [0, 1].
+    std::vector<TestResult> applyToDefined(const std::vector<TestResult>& defined, const std::vector<TestResult>& reported,
+                                           const std::string& missingReason = "no result") const;
+
+    // Decimals scores are rounded to ("precision" in the rubric file, 0..6, default 2).
+    int precision() const { return precision_; }
+    double round(double points) const;
 
 private:
     std::vector<RubricRule> rules_;
+    int precision_ = 2;
 };
 
 bool globMatches(const std::string& pattern, const std::string& text);
