@@ -18,7 +18,7 @@ namespace {
 constexpr size_t kBruteForceRayStride = 64;
 
 // The binary BVHs of a1/a2 as students traverse them, then the framework's four- and
-// eight-wide traversals of the SAH trees (framework/accel/wide_bvh_accelerator.h).
+// eight-wide traversals of the SAH trees (fast/wide_bvh_accelerator.h).
 const std::vector<std::string> kRtlabAccelerators{
     "brute",          "bvh-median",     "bvh-middle", "bvh-equal",     "bvh-sah",       "bvh-buckets:4",
     "bvh-buckets:8",  "bvh-buckets:12", "bvh-buckets:16", "bvh-buckets:32", "bvh4-sah", "bvh4-buckets:12",

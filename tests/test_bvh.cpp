@@ -305,7 +305,7 @@ std::vector<AcceleratorCase> allAccelerators() {
         spec.sahAllAxes = true;
         cases.push_back({spec});
     }
-    // The framework's wide traversals of the same trees.
+    // The wide traversals of the same trees (fast/).
     for (const char* name : {"bvh4-median", "bvh4-middle", "bvh4-equal", "bvh4-sah", "bvh4-buckets:12", "bvh8-sah",
                              "bvh8-buckets:12"})
         for (int maxLeaf : {1, 4, 8}) {

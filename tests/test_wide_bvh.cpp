@@ -1,9 +1,9 @@
-// The wide BVHs (framework/accel/wide_bvh*.h, four and eight wide): the collapse keeps the
+// The wide BVHs (fast/wide_bvh*.h, four and eight wide): the collapse keeps the
 // binary tree's leaves and primitives, and the SIMD traversal reports exactly the hits of the
 // binary traversal of the same tree. Correctness against the oracle is in test_bvh.cpp (allAccelerators).
+#include "fast/wide_bvh.h"
 #include "framework/accel/accelerator.h"
 #include "framework/accel/bvh_accelerator.h"
-#include "framework/accel/wide_bvh.h"
 #include "framework/scene/benchmark_rays.h"
 #include "framework/scene/gltf_loader.h"
 

@@ -30,8 +30,8 @@ public:
 
 // Accelerator names accepted by --accel (docs/conventions.md):
 //   brute | bvh-median | bvh-middle | bvh-equal | bvh-sah | bvh-buckets[:B]
-// and the wide fast path over the same trees (wide_bvh_accelerator.h), four or eight wide:
-//   bvh4-median | bvh4-middle | bvh4-equal | bvh4-sah | bvh4-buckets[:B], bvh8-... likewise
+// and, where an executable links them, other traversals of the same trees (bvh_layouts.h):
+//   bvh4-median ... bvh4-buckets[:B], bvh8-... likewise (the wide BVHs of fast/)
 struct AcceleratorSpec {
     std::string name = "bvh-buckets";
     int maxLeaf = 4;
@@ -41,5 +41,8 @@ struct AcceleratorSpec {
 
 // Throws rtlab::Error with the list of valid names when spec.name is unknown.
 std::unique_ptr<Accelerator> makeAccelerator(const AcceleratorSpec& spec);
+
+// The names makeAccelerator accepts in this executable, for help texts and errors.
+std::string acceleratorNames();
 
 }  // namespace rtlab

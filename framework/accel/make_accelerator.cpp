@@ -2,16 +2,19 @@
 #include "framework/accel/accelerator.h"
 #include "framework/accel/brute_force.h"
 #include "framework/accel/bvh_accelerator.h"
-#include "framework/accel/wide_bvh_accelerator.h"
+#include "framework/accel/bvh_layouts.h"
 #include "framework/core/error.h"
 
 #include <charconv>
 
 namespace rtlab {
 
-static constexpr const char* kValidNames =
-    "brute, bvh-median, bvh-middle, bvh-equal, bvh-sah, bvh-buckets[:B] with B in 2..32, and the "
-    "same with bvh4- or bvh8- for the four- or eight-wide BVH";
+std::string acceleratorNames() {
+    std::string names = "brute, bvh-median, bvh-middle, bvh-equal, bvh-sah, bvh-buckets[:B] with B in 2..32";
+    for (const BvhLayout* layout : bvhLayouts())
+        names += ", " + layout->prefix + "-<method> (" + layout->description + ")";
+    return names;
+}
 
 std::unique_ptr<Accelerator> makeAccelerator(const AcceleratorSpec& spec) {
     if (spec.maxLeaf < 1 || spec.maxLeaf > 65535)
@@ -21,9 +24,16 @@ std::unique_ptr<Accelerator> makeAccelerator(const AcceleratorSpec& spec) {
     BvhOptions options;
     options.maxLeaf = spec.maxLeaf;
     options.allAxes = spec.sahAllAxes;
-    // bvh4-<method> and bvh8-<method> traverse the tree bvh-<method> builds, four or eight wide.
-    int width = spec.name.starts_with("bvh4-") ? 4 : spec.name.starts_with("bvh8-") ? 8 : 2;
-    std::string name = width > 2 ? "bvh-" + spec.name.substr(5) : spec.name;
+    // <layout>-<method>: the tree bvh-<method> builds, traversed by the layout named before the
+    // dash (bvh is the binary traversal, others are registered in bvh_layouts.h).
+    size_t dash = spec.name.find('-');
+    std::string prefix = spec.name.substr(0, dash);
+    const BvhLayout* layout = findBvhLayout(prefix);
+    // An executable without the fast paths names them; one with them lists what it has.
+    if (!layout && bvhLayouts().empty() && isWideBvhPrefix(prefix) && dash != std::string::npos)
+        throw Error("--accel " + spec.name +
+                    ": the wide BVHs are fast paths, built only into rtlab-solution and the benchmarks");
+    std::string name = layout ? "bvh" + spec.name.substr(dash) : spec.name;
     if (name.starts_with("bvh-buckets:")) {
         std::string count = name.substr(12);
         auto [end, ec] = std::from_chars(count.data(), count.data() + count.size(), options.buckets);
@@ -37,12 +47,11 @@ std::unique_ptr<Accelerator> makeAccelerator(const AcceleratorSpec& spec) {
     else if (name == "bvh-equal") options.method = SplitMethod::EqualCounts;
     else if (name == "bvh-sah") options.method = SplitMethod::SahSweep;
     else if (name == "bvh-buckets") options.method = SplitMethod::SahBuckets;
-    else throw Error("--accel " + spec.name + " is not an accelerator (valid: " + kValidNames + ")");
-    if (width == 2) return std::make_unique<BvhAccelerator>(options, spec.recursiveTraversal);
+    else throw Error("--accel " + spec.name + " is not an accelerator (valid: " + acceleratorNames() + ")");
+    if (!layout) return std::make_unique<BvhAccelerator>(options, spec.recursiveTraversal);
     if (spec.recursiveTraversal)
         throw Error("--traversal recursive applies to the binary BVH only, not to " + spec.name);
-    if (width == 4) return std::make_unique<WideBvhAccelerator<4>>(options);
-    return std::make_unique<WideBvhAccelerator<8>>(options);
+    return layout->make(options);
 }
 
 }  // namespace rtlab

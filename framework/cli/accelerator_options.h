@@ -10,7 +10,8 @@
 
 namespace rtlab::cli {
 
-// Adds the flags to command; each writes straight into spec. accelHelp describes --accel.
-void addAcceleratorOptions(CLI::App* command, AcceleratorSpec& spec, const std::string& accelHelp);
+// Adds the flags to command; each writes straight into spec. The help of --accel is accelWhat
+// ("Accelerator", or what else the command accepts) followed by the names this executable knows.
+void addAcceleratorOptions(CLI::App* command, AcceleratorSpec& spec, const std::string& accelWhat);
 
 }  // namespace rtlab::cli

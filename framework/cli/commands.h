@@ -14,6 +14,7 @@ void addExportPovCommand(CLI::App& app);
 void addRefsCommand(CLI::App& app);
 void addCompareCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
+void addReleaseCommand(CLI::App& app);
 
 // Runs rtlab with the given arguments; returns the process exit code.
 int run(int argc, char** argv);

@@ -140,10 +140,7 @@ void addHitsCommand(CLI::App& app) {
         ->check(CLI::ExistingFile);
     command->add_option("-o,--output", options->outputPath, "CSV to write: ray,hit,t,prim,px,py,pz,nx,ny,nz")
         ->required();
-    addAcceleratorOptions(command, options->accelerator,
-                          "oracle (exact, double precision) or an accelerator: brute, bvh-median, bvh-middle, "
-                          "bvh-equal, bvh-sah, bvh-buckets[:B]; bvh4-... or bvh8-... for the wide BVH of the "
-                          "same tree");
+    addAcceleratorOptions(command, options->accelerator, "oracle (exact, double precision) or an accelerator");
     command->add_option("--threads", options->threads, "Worker threads (0 = one per hardware thread)")
         ->check(CLI::NonNegativeNumber)
         ->capture_default_str();

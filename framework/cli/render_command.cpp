@@ -124,9 +124,7 @@ void addRenderCommand(CLI::App& app) {
     command->add_option("--height", options->height, "Image height in pixels (default from the width and the camera's aspect, else 4:3)")
         ->check(CLI::Range(1, 1 << 15));
     command->add_option("--camera", options->cameraName, "Camera by name (default: the first)");
-    addAcceleratorOptions(command, options->accelerator,
-                          "Accelerator: brute, bvh-median, bvh-middle, bvh-equal, bvh-sah, bvh-buckets[:B]; "
-                          "bvh4-... or bvh8-... for the wide BVH of the same tree");
+    addAcceleratorOptions(command, options->accelerator, "Accelerator");
     command->add_option("--threads", options->threads, "Worker threads (0 = one per hardware thread)")
         ->check(CLI::NonNegativeNumber)
         ->capture_default_str();

@@ -18,6 +18,7 @@ int run(int argc, char** argv) {
     addRefsCommand(app);
     addCompareCommand(app);
     addBenchCommand(app);
+    addReleaseCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -41,7 +41,7 @@ one_line_naming() {
     fi
 }
 
-for command in "" info render hits scene grade; do
+for command in "" info render hits scene grade release; do
     expect 0 "rtlab $command --help" -- "$solution" $command --help
 done
 expect 2 "no subcommand" -- "$solution"
@@ -63,6 +63,23 @@ expect 1 "bucket count out of range" -- "$solution" render "$scene" -o "$work/x.
 one_line_naming "bvh-buckets:99" "bucket count out of range"
 expect 1 "recursive traversal of the wide BVH" -- "$solution" render "$scene" -o "$work/x.png" --accel bvh4-sah --traversal recursive
 one_line_naming "bvh4-sah" "recursive traversal of the wide BVH"
+
+# The student binary does not link the fast paths (fast/): their names say where they are.
+expect 1 "a wide BVH in the student binary" -- "$student" render "$scene" -o "$work/x.png" --accel bvh4-sah
+one_line_naming "only into rtlab-solution" "a wide BVH in the student binary"
+"$student" render --help | grep -q "bvh4" && { echo "FAIL: rtlab render --help offers bvh4"; failures=$((failures + 1)); }
+"$solution" render --help | grep -q "bvh4-<method>" || { echo "FAIL: rtlab-solution render --help lacks bvh4"; failures=$((failures + 1)); }
+
+release_dir=$work/release-into
+mkdir "$release_dir"
+echo keep > "$release_dir/mine.txt"
+expect 1 "a release into a folder that is not empty" -- "$solution" release "$release_dir"
+one_line_naming "is not empty" "a release into a folder that is not empty"
+[ "$(ls -A "$release_dir")" = "mine.txt" ] && [ "$(cat "$release_dir/mine.txt")" = keep ] ||
+    { echo "FAIL: a refused release changed the folder"; failures=$((failures + 1)); }
+expect 1 "a release from a folder that is not a git repository" -- "$solution" release --from "$work" "$work/release-new"
+one_line_naming "not a git repository" "a release from a folder that is not a git repository"
+[ ! -e "$work/release-new" ] || { echo "FAIL: a failed release left its folder"; failures=$((failures + 1)); }
 
 expect 1 "output into a missing folder" -- "$solution" render "$scene" -o "$work/no/such/dir/x.png"
 one_line_naming "no/such/dir" "output into a missing folder"

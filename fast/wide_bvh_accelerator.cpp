@@ -1,8 +1,8 @@
-#include "framework/accel/wide_bvh_accelerator.h"
+#include "fast/wide_bvh_accelerator.h"
 
+#include "fast/simd.h"
 #include "framework/accel/bvh_accelerator.h"
 #include "framework/core/float_bits.h"
-#include "framework/core/simd.h"
 #include "framework/interface/a1_bvh.h"
 
 #include <bit>

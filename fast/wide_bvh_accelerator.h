@@ -2,16 +2,16 @@
 // BVH with assignment a1/a2's buildBvh, folds it W-wide (wide_bvh.h) and traverses it with a
 // W-wide slab test and the watertight triangle test on four triangles at once (triangle_packet.h).
 //
-// This is the framework's fast path, the one the benchmarks put next to Embree. It shows what
-// the same tree gains from layout and SIMD alone; the student's own traversal is the binary
-// one (BvhAccelerator). The SIMD code is written with GCC's vector extensions, so it compiles
+// This is the fast path the benchmarks put next to Embree (registered as a BVH layout by
+// wide_bvh_layouts.cpp). It shows what the same tree gains from layout and SIMD alone; the
+// student's own traversal is the binary one (BvhAccelerator). The SIMD code is written with GCC's vector extensions, so it compiles
 // for any target: W = 4 fills an SSE or NEON register, W = 8 an AVX register (with -mavx or
 // -march=native; without, the compiler splits it into two 4-wide halves).
 #pragma once
 
+#include "fast/triangle_packet.h"
+#include "fast/wide_bvh.h"
 #include "framework/accel/accelerator.h"
-#include "framework/accel/triangle_packet.h"
-#include "framework/accel/wide_bvh.h"
 
 namespace rtlab {
 

@@ -8,9 +8,9 @@
 // intersectTriangle on each triangle.
 #pragma once
 
+#include "fast/simd.h"
 #include "framework/core/float_bits.h"
 #include "framework/core/ray.h"
-#include "framework/core/simd.h"
 #include "framework/interface/a0_intersect.h"
 
 #include <array>

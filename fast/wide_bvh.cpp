@@ -1,4 +1,4 @@
-#include "framework/accel/wide_bvh.h"
+#include "fast/wide_bvh.h"
 
 #include <algorithm>
 

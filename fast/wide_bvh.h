@@ -7,7 +7,7 @@
 // into their parents: same leaves, same primitives, only fewer interior nodes.
 #pragma once
 
-#include "framework/core/huge_page_allocator.h"
+#include "fast/huge_page_allocator.h"
 #include "framework/interface/bvh.h"
 
 #include <array>

@@ -1,0 +1,17 @@
+#!/bin/bash
+# The tuned paths stay apart (fast/CMakeLists.txt): nothing below fast/ in the layers includes
+# it, the student's rtlab holds none of its code, and rtlab-solution does.
+# Usage: fast_paths_apart.sh BUILD_DIR SOURCE_DIR
+set -u
+build=$1
+source=$2
+failures=0
+includes=$(cd "$source" && grep -rlE '^#include "fast/' framework grader assignments solutions)
+[ -z "$includes" ] || { echo "FAIL: these include fast/: $includes"; failures=$((failures + 1)); }
+# Code of fast/ that a linker cannot leave out: the accelerator's vtable.
+wide=$(nm -C "$build/rtlab" | grep -c "vtable for rtlab::WideBvhAccelerator")
+[ "$wide" -eq 0 ] || { echo "FAIL: rtlab links the wide BVH"; failures=$((failures + 1)); }
+wide=$(nm -C "$build/rtlab-solution" | grep -c "vtable for rtlab::WideBvhAccelerator")
+[ "$wide" -eq 2 ] || { echo "FAIL: rtlab-solution lacks the wide BVHs (found $wide of 2 vtables)"; failures=$((failures + 1)); }
+echo "$((3 - failures)) passed, $failures failed"
+[ "$failures" -eq 0 ]
