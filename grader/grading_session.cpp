@@ -37,6 +37,16 @@ void mergeSameNamed(std::vector<TestResult>& results) {
     results = std::move(merged);
 }
 
+namespace {
+
+SandboxRun unavailableWorkerRun(size_t phases, const std::string& reason) {
+    SandboxRun run;
+    run.phases.assign(phases, PhaseOutcome{PhaseStatus::Failed, {}, reason, 0.0, 0.0});
+    return run;
+}
+
+}  // namespace
+
 GradingReport gradeWorker(const GradingOptions& options) {
     auto start = std::chrono::steady_clock::now();
     GradingContext context;
@@ -74,7 +84,8 @@ GradingReport gradeWorker(const GradingOptions& options) {
         const TestGroup& group = groups[i];
         if (terminal) std::cerr << "\r\033[K[" << i + 1 << "/" << groups.size() << "] " << group.title << std::flush;
         SandboxRun run;
-        if (!group.phases.empty()) run = runSandboxed(worker, group.phases, &strikes);
+        if (!options.unavailableWorker.empty()) run = unavailableWorkerRun(group.phases.size(), options.unavailableWorker);
+        else if (!group.phases.empty()) run = runSandboxed(worker, group.phases, &strikes);
         size_t before = report.tests.size();
         try {
             group.score(run, report.tests);

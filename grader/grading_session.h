@@ -5,6 +5,7 @@
 
 #include "grader/grading_report.h"
 #include "grader/sandbox.h"
+#include "grader/submission_build.h"
 #include "grader/test_group.h"
 
 #include <string>
@@ -20,7 +21,9 @@ struct GradingOptions {
     std::string rubricPath;  // default sourceDir/grader/rubric.json
     std::vector<std::string> assignments;  // empty: all of a0, a1, a2
     std::string workerPath;  // the worker executable holding the code to grade (grader/worker/)
+    std::string unavailableWorker;  // when set, no worker runs and every phase fails with this reason
     SandboxLimits limits;
+    CompileLimits compile;   // for a submission's build
     bool writeReference = false;  // record SAH costs and work per ray into grader/reference/
     bool progress = true;         // progress lines on stderr when it is a terminal
     std::string implementation;   // what is graded, for the reports

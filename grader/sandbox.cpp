@@ -244,7 +244,7 @@ private:
             return;
         }
         PhaseOutcome& outcome = outcomes_[phase];
-        const std::string& stub = phases_[phase].stub;
+        const std::string stub = blame(phase);
         std::string text(payload.begin(), payload.end());
         switch (kind) {
         case RecordKind::PhaseData:
@@ -281,6 +281,13 @@ private:
         if (kind != RecordKind::Forbidden) queueRequest(step_ + 1);
     }
 
+    // Before the worker has read phase 0, only code that runs at start-up can be running.
+    std::string blame(size_t phase) const {
+        if (phase == order_.front() && step_ == 0 && !phaseStarted_)
+            return "code that runs before any test (a global object's constructor or an initialiser)";
+        return phases_[phase].stub;
+    }
+
     void finishPhase(size_t phase) {
         PhaseOutcome& outcome = outcomes_[phase];
         outcome.seconds = std::chrono::duration<double>(Clock::now() - phaseRequestedAt_).count();
@@ -309,7 +316,7 @@ private:
         auto phase = currentPhase();
         if (!phase || reported_[*phase]) return;
         PhaseOutcome& outcome = outcomes_[*phase];
-        const std::string& stub = phases_[*phase].stub;
+        const std::string stub = blame(*phase);
         int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
         if (malformed_) {
             outcome.status = PhaseStatus::Failed;

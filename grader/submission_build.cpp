@@ -1,185 +1,141 @@
 #include "grader/submission_build.h"
 
 #include "framework/core/error.h"
+#include "grader/compile_sandbox.h"
+#include "grader/pristine_stubs.h"
 
 #include <nlohmann/json.hpp>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <optional>
-#include <sstream>
-#include <sys/wait.h>
+#include <set>
 
 namespace rtlab::grader {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string quote(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
+constexpr uintmax_t kMaxFileBytes = uintmax_t(1) << 20;
+constexpr size_t kMaxFiles = 200;
+// The framework headers a student file may include: the assignment interfaces and what they
+// build on. The renderer, the oracle and the reference renderers are not among them.
+constexpr const char* kStudentHeaderFolders[] = {"framework/core", "framework/interface", "framework/accel", "framework/scene"};
+
+// A submission's file, read only when it is a plain file: a symbolic link could point at
+// anything the grader may read (solutions/, reference data), so it is refused.
+std::string readPlainFile(const fs::path& path) {
+    auto status = fs::symlink_status(path);
+    if (fs::is_symlink(status)) throw Error(path.string() + ": a symbolic link; submit the file itself");
+    if (!fs::is_regular_file(status)) throw Error(path.string() + ": not a regular file");
+    if (fs::file_size(path) > kMaxFileBytes) throw Error(path.string() + ": larger than 1 MiB");
+    std::ifstream in(path, std::ios::binary);
+    std::string contents(std::istreambuf_iterator<char>(in), {});
+    if (!in.good() && !in.eof()) throw Error(path.string() + ": cannot be read");
+    if (in.bad()) throw Error(path.string() + ": cannot be read");
+    return contents;
 }
 
-void appendArgument(std::string& command, const std::string& argument) {
-    command += ' ';
-    command += quote(argument);
+void writeFile(const fs::path& path, const std::string& contents) {
+    fs::create_directories(path.parent_path());
+    std::ofstream out(path, std::ios::binary);
+    out << contents;
+    if (!out) throw Error(path.string() + ": cannot be written");
 }
 
-// Runs a shell command; returns its exit status and appends its output to log.
-int run(const std::string& command, std::string& log) {
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    if (!pipe) throw Error("grader: cannot run " + command);
-    std::array<char, 4096> buffer;
-    size_t n;
-    while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) log.append(buffer.data(), n);
-    int status = pclose(pipe);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
-}
+bool isSource(const fs::path& p) { return p.extension() == ".cpp" || p.extension() == ".h" || p.extension() == ".hpp"; }
 
 // Where a submission keeps the file that replaces stub `relative` (assignments/a0_intersect/
 // ray_box.cpp): under the same path, without the assignments/ prefix, or flat by file name.
 std::optional<fs::path> findInSubmission(const fs::path& submission, const fs::path& relative) {
     fs::path withoutRoot = relative.lexically_relative("assignments");
     for (const fs::path& candidate : {submission / relative, submission / withoutRoot, submission / relative.filename()})
-        if (fs::is_regular_file(candidate)) return candidate;
+        if (fs::exists(fs::symlink_status(candidate))) return candidate;
     return std::nullopt;
 }
 
-// Student code may only run when the grader calls it, inside the sandbox. Constructors and
-// destructors of global objects (and __attribute__((constructor))) would run before main or
-// at exit, outside it: their sections are removed, with a note in the build log. An ifunc
-// resolver runs while the program is loaded and cannot be removed: the build is refused.
-// Returns the refusal, or "" when the object may be linked.
-std::string removeCodeOutsideCalls(const std::string& object, const std::string& name, std::string& log) {
-    std::string listing;
-    run("readelf -W -S -s " + quote(object), listing);
-    if (listing.find(" IFUNC ") != std::string::npos) return name + ": refused, it defines an ifunc resolver\n";
-    std::string strip;
-    for (const char* section : {".init_array", ".preinit_array", ".ctors", ".fini_array", ".dtors"})
-        if (listing.find(std::string(" ") + section + " ") != std::string::npos)
-            strip += std::string(" --remove-section=") + section + " --remove-section=.rela" + section;
-    if (strip.empty()) return "";
-    std::string output;
-    if (run("objcopy" + strip + " " + quote(object), output) != 0) return name + ": could not be prepared: " + output;
-    log += name + ": note: constructors and destructors of global objects in this file are not run (the grader runs "
-                  "your code only when it calls your functions); use function-local statics instead\n";
-    return "";
+// The stubs, replaced file by file by the submission's, plus the submission's own helper
+// sources and headers in its assignment folders. Returns the files taken from the submission.
+std::vector<std::string> mergeSources(const fs::path& submission, const std::map<std::string, std::string>& stubs, const fs::path& into) {
+    std::vector<std::string> taken;
+    std::set<fs::path> assignments;
+    for (const auto& [name, contents] : stubs) {
+        fs::path relative = name;
+        assignments.insert(relative.parent_path());
+        auto replacement = findInSubmission(submission, relative);
+        writeFile(into / relative, replacement ? readPlainFile(*replacement) : contents);
+        if (replacement) taken.push_back(replacement->string());
+    }
+    for (const fs::path& assignment : assignments) {
+        fs::path name = assignment.filename();
+        for (const fs::path& folder : {submission / "assignments" / name, submission / name}) {
+            if (fs::is_symlink(fs::symlink_status(folder)) || !fs::is_directory(folder)) continue;
+            for (const auto& entry : fs::directory_iterator(folder)) {
+                fs::path target = into / assignment / entry.path().filename();
+                if (!isSource(entry.path()) || stubs.count((assignment / entry.path().filename()).string())) continue;
+                if (taken.size() >= kMaxFiles) throw Error(submission.string() + ": more than 200 source files");
+                writeFile(target, readPlainFile(entry.path()));
+                taken.push_back(entry.path().string());
+            }
+        }
+    }
+    return taken;
+}
+
+void copyStudentHeaders(const fs::path& sourceDir, const fs::path& into) {
+    for (const char* folder : kStudentHeaderFolders)
+        for (const auto& entry : fs::directory_iterator(sourceDir / folder))
+            if (entry.path().extension() == ".h") writeFile(into / folder / entry.path().filename(), readPlainFile(entry.path()));
+}
+
+nlohmann::json readToolchain(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw Error(path + ": missing; build rtlab first (make build)");
+    try {
+        return nlohmann::json::parse(in);
+    } catch (const nlohmann::json::exception& e) {
+        throw Error(path + ": malformed (" + e.what() + ")");
+    }
 }
 
 }  // namespace
 
 SubmissionBuild buildSubmission(const std::string& submissionDir, const std::string& sourceDir, const std::string& toolchainPath,
-                                const std::string& workDir) {
+                                const std::string& workDir, const CompileLimits& limits) {
     if (!fs::is_directory(submissionDir)) throw Error(submissionDir + ": the submission folder does not exist");
-    std::ifstream in(toolchainPath);
-    if (!in) throw Error(toolchainPath + ": missing; build rtlab first (make build)");
-    nlohmann::json toolchain;
-    try {
-        toolchain = nlohmann::json::parse(in);
-    } catch (const nlohmann::json::exception& e) {
-        throw Error(toolchainPath + ": malformed (" + e.what() + ")");
-    }
+    nlohmann::json toolchain = readToolchain(toolchainPath);
+    const CompileSandbox& sandbox = CompileSandbox::detect();
 
     SubmissionBuild build;
-    fs::create_directories(workDir);
-    std::string compile = quote(toolchain.at("compiler").get<std::string>());
-    appendArgument(compile, "-I" + (fs::path(workDir) / "src").string());
-    for (const auto& flag : toolchain.at("compile_flags")) appendArgument(compile, flag.get<std::string>());
-    for (const auto& dir : toolchain.at("include_dirs")) appendArgument(compile, "-I" + dir.get<std::string>());
+    build.isolation = sandbox.description();
+    CompileInputs host{(fs::path(workDir) / "src").string(), (fs::path(workDir) / "include").string(),
+                       toolchain.at("worker_runtime").get<std::string>(), (fs::path(workDir) / "out").string()};
+    fs::create_directories(host.output);
+    auto stubs = pristineStubs(sourceDir);
+    build.fromSubmission = mergeSources(submissionDir, stubs, host.sources);
+    copyStudentHeaders(sourceDir, host.headers);
 
-    // The stub set defines which files exist; the submission replaces them one by one, and
-    // extra .cpp files in its assignment folders are compiled too (helpers).
-    std::vector<std::pair<fs::path, fs::path>> sources;  // (source, object)
-    fs::path stubs = fs::path(sourceDir) / "assignments";
-    for (const auto& entry : fs::recursive_directory_iterator(stubs)) {
-        if (entry.path().extension() != ".cpp") continue;
-        fs::path relative = entry.path().lexically_relative(sourceDir);
-        auto replacement = findInSubmission(submissionDir, relative);
-        if (replacement) build.fromSubmission.push_back(replacement->string());
-        sources.push_back({replacement ? *replacement : entry.path(), relative});
-    }
-    for (const auto& assignment : fs::directory_iterator(stubs)) {
-        fs::path name = assignment.path().filename();
-        for (const fs::path& folder : {fs::path(submissionDir) / "assignments" / name, fs::path(submissionDir) / name}) {
-            if (!fs::is_directory(folder)) continue;
-            for (const auto& entry : fs::directory_iterator(folder))
-                if (entry.path().extension() == ".cpp" && !fs::exists(stubs / name / entry.path().filename())) {
-                    build.fromSubmission.push_back(entry.path().string());
-                    sources.push_back({entry.path(), fs::path("assignments") / name / entry.path().filename()});
-                }
-        }
-    }
+    CompileInputs inside = sandbox.visiblePaths(host);
+    std::vector<std::string> command = {fs::canonical(toolchain.at("compiler").get<std::string>()).string()};
+    for (const auto& flag : toolchain.at("compile_flags")) command.push_back(flag.get<std::string>());
+    command.insert(command.end(), {"-I" + inside.headers, "-I" + inside.sources});
+    for (const auto& entry : fs::recursive_directory_iterator(host.sources))
+        if (entry.path().extension() == ".cpp") command.push_back((fs::path(inside.sources) / entry.path().lexically_relative(host.sources)).string());
+    command.push_back(inside.runtimeObject);
+    for (const auto& flag : toolchain.at("link_flags")) command.push_back(flag.get<std::string>());
+    command.insert(command.end(), {"-o", (fs::path(inside.output) / "rtlab-worker").string()});
 
-    // Headers of the submission sit next to its copied sources, and src/ comes first on the
-    // include path, so both "helper.h" and "assignments/a1_bvh/helper.h" find them.
-    for (const auto& assignment : fs::directory_iterator(stubs)) {
-        fs::path name = assignment.path().filename();
-        fs::path target = fs::path(workDir) / "src" / "assignments" / name;
-        fs::create_directories(target);
-        for (const fs::path& folder : {fs::path(submissionDir) / "assignments" / name, fs::path(submissionDir) / name, fs::path(submissionDir)}) {
-            if (!fs::is_directory(folder)) continue;
-            for (const auto& entry : fs::directory_iterator(folder))
-                if (entry.path().extension() == ".h" || entry.path().extension() == ".hpp")
-                    fs::copy_file(entry.path(), target / entry.path().filename(), fs::copy_options::overwrite_existing);
-        }
-    }
-
-    // A stub the submission does not replace is already compiled in the build tree.
-    auto prebuilt = [&](const fs::path& relative) -> std::optional<std::string> {
-        std::string suffix = (fs::path("/") / relative).string();
-        suffix += ".o";
-        for (const auto& object : toolchain.value("stub_objects", nlohmann::json::array())) {
-            std::string path = object.get<std::string>();
-            if (path.size() >= suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0) return path;
-        }
-        return std::nullopt;
-    };
-    std::vector<std::string> objects;
-    for (const auto& [source, relative] : sources) {
-        if (source.lexically_relative(sourceDir) == relative) {
-            if (auto object = prebuilt(relative)) {
-                objects.push_back(*object);
-                continue;
-            }
-        }
-        fs::path object = fs::path(workDir) / "objects" / relative;
-        object.replace_extension(".o");
-        fs::create_directories(object.parent_path());
-        // Copied next to the object so a diagnostic names the student's file by its place in
-        // the assignment tree.
-        fs::path copy = fs::path(workDir) / "src" / relative;
-        fs::create_directories(copy.parent_path());
-        fs::copy_file(source, copy, fs::copy_options::overwrite_existing);
-        std::string log;
-        if (run(compile + " -c " + quote(copy.string()) + " -o " + quote(object.string()), log) != 0) {
-            build.log += log;
-            continue;
-        }
-        build.log += log;
-        if (std::string refusal = removeCodeOutsideCalls(object.string(), relative.string(), build.log); !refusal.empty()) {
-            build.log += refusal;
-            continue;
-        }
-        objects.push_back(object.string());
-    }
-    if (objects.size() != sources.size()) return build;
-
-    std::string link = compile;
-    appendArgument(link, toolchain.at("main_object").get<std::string>());
-    appendArgument(link, "-Wl,--whole-archive");
-    for (const auto& archive : toolchain.at("archives")) appendArgument(link, archive.get<std::string>());
-    appendArgument(link, "-Wl,--no-whole-archive");
-    for (const std::string& object : objects) appendArgument(link, object);
-    for (const auto& library : toolchain.at("libraries")) appendArgument(link, library.get<std::string>());
-    build.executable = (fs::path(workDir) / "rtlab-submission").string();
-    appendArgument(link, "-o");
-    appendArgument(link, build.executable);
-    std::string log;
-    build.succeeded = run(link, log) == 0;
-    build.log += log;
+    ProcessLimits processLimits;
+    processLimits.wallSeconds = limits.wallSeconds;
+    processLimits.cpuSeconds = static_cast<int>(limits.wallSeconds) + 1;
+    processLimits.memoryMiB = limits.memoryMiB;
+    ProcessResult result = sandbox.run(host, command, processLimits);
+    build.log = result.output;
+    if (result.droppedBytes > 0) build.log += "\n[" + std::to_string(result.droppedBytes) + " more bytes of compiler output not shown]\n";
+    if (result.timedOut) build.log = "the compiler was stopped after the limit of " + std::to_string(int(limits.wallSeconds)) + " s\n" + build.log;
+    else if (!result.succeeded() && build.log.empty()) build.log = "the compiler failed: " + result.failure + "\n";
+    build.executable = (fs::path(host.output) / "rtlab-worker").string();
+    build.succeeded = result.succeeded() && fs::is_regular_file(build.executable);
     return build;
 }
 

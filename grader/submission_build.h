@@ -1,10 +1,8 @@
-// Builds a student's submission into its own rtlab executable (docs/grading.md, "Grading a
-// submission"): the student's assignment files, with the repository's stubs for any file the
-// submission lacks, are compiled with the flags of the build tree and linked against the
-// libraries already built there. Student code must not run outside the sandbox: constructors
-// of global objects are removed from student objects (with a note) and ifunc resolvers are
-// refused. Framework libraries are linked whole and first, so a student file that defines a
-// framework function fails to link instead of replacing it.
+// Builds a student's submission into a worker of its own (docs/grading.md, "Grading a
+// submission"): the student's assignment files, over the committed stubs for any file the
+// submission lacks, are compiled inside the compile sandbox (compile_sandbox.h) and linked
+// statically with the worker runtime, as rtlab-worker is. Nothing is taken from the working
+// tree's compiled objects.
 #pragma once
 
 #include <string>
@@ -14,13 +12,21 @@ namespace rtlab::grader {
 
 struct SubmissionBuild {
     bool succeeded = false;
-    std::string executable;
-    std::string log;                      // compiler and linker messages, or why the build was refused
+    std::string executable;                   // the worker
+    std::string log;                          // raw compiler and linker output, or why the build was refused
     std::vector<std::string> fromSubmission;  // the files taken from the submission
+    std::string isolation;                    // what the compile sandbox consisted of
 };
 
-// toolchainPath: build/grader/submission-toolchain.json; workDir: an empty directory.
-SubmissionBuild buildSubmission(const std::string& submissionDir, const std::string& sourceDir,
-                                const std::string& toolchainPath, const std::string& workDir);
+struct CompileLimits {
+    double wallSeconds = 120.0;
+    int memoryMiB = 4096;
+};
+
+// toolchainPath: build/grader/submission-toolchain.json; workDir: an empty directory. Throws
+// rtlab::Error with one line when the submission cannot be read (a symbolic link, an
+// unreadable or oversized file).
+SubmissionBuild buildSubmission(const std::string& submissionDir, const std::string& sourceDir, const std::string& toolchainPath,
+                                const std::string& workDir, const CompileLimits& limits = {});
 
 }  // namespace rtlab::grader

@@ -1,6 +1,7 @@
-// The grader's fixtures (grader/fixtures/, docs/grading.md "Fixtures"): broken and cheating
-// submissions, each built through `rtlab grade --submissions` exactly as an instructor would,
-// must get the verdict grader/fixtures/expectations.json names and score nothing.
+// The grader's fixtures (grader/fixtures/, docs/grading.md "Fixtures"): hostile and broken
+// submissions, each graded through `rtlab grade --submissions` exactly as an instructor would,
+// must get the verdict grader/fixtures/expectations.json names and no point they should not.
+#include "grader/compile_sandbox.h"
 #include "grader/grading_report.h"
 
 #include <doctest/doctest.h>
@@ -15,31 +16,58 @@
 namespace fs = std::filesystem;
 using namespace rtlab::grader;
 
-TEST_CASE("grader fixtures: every broken submission gets its verdict and no points") {
+namespace {
+
+// The submissions folder the batch grades: each fixture as it is, or laid over a copy of the
+// reference solutions when it says with_solutions.
+fs::path assembleSubmissions(const nlohmann::json& fixtures, const fs::path& source, const fs::path& into) {
+    for (const auto& [name, expected] : fixtures.items()) {
+        fs::path target = into / name;
+        fs::create_directories(target / "assignments");
+        if (expected.value("with_solutions", false))
+            fs::copy(source / "solutions", target / "assignments", fs::copy_options::recursive);
+        fs::copy(source / "grader/fixtures" / name, target, fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+    }
+    return into;
+}
+
+}  // namespace
+
+TEST_CASE("grader fixtures: every hostile or broken submission gets its verdict and no point it should not") {
+    // The verdicts of the include and .incbin fixtures are those of the compile sandbox.
+    REQUIRE_MESSAGE(CompileSandbox::detect().usesNamespaces(), CompileSandbox::detect().description());
     const fs::path source = RTLAB_SOURCE_DIR, binary = RTLAB_BINARY_DIR;
     const fs::path work = fs::temp_directory_path() / ("rtlab-fixtures-" + std::to_string(::getpid()));
     fs::create_directories(work);
-    auto expectations = nlohmann::json::parse(std::ifstream(source / "grader/fixtures/expectations.json"));
-    for (const auto& [name, expected] : expectations.at("fixtures").items())
+    auto fixtures = nlohmann::json::parse(std::ifstream(source / "grader/fixtures/expectations.json")).at("fixtures");
+    for (const auto& [name, expected] : fixtures.items())
         for (const auto& path : expected.value("not_created", nlohmann::json::array())) fs::remove(path.get<std::string>());
+    fs::path submissions = assembleSubmissions(fixtures, source, work / "submissions");
 
     // Run from `work`, so relative paths a fixture tries to write would land there.
     std::string command = "cd '" + work.string() + "' && '" + (binary / "rtlab-solution").string() + "' grade --submissions '" +
-                          (source / "grader/fixtures").string() + "' --jobs 2 --csv grades.csv --time-limit 1 --memory-limit 256" +
+                          submissions.string() + "' --jobs 2 --csv grades.csv --time-limit 1 --memory-limit 256 --compile-time-limit 20" +
                           " --assignment a0 --assignment a1 --models '" + (binary / "models").string() + "' --work '" +
                           (work / "grading").string() + "' > batch.log 2>&1";
     REQUIRE(std::system(command.c_str()) == 0);
     REQUIRE(fs::exists(work / "grades.csv"));
 
-    for (const auto& [name, expected] : expectations.at("fixtures").items()) {
+    for (const auto& [name, expected] : fixtures.items()) {
         CAPTURE(name);
         GradingReport report = readJsonReport((work / "grades-reports" / (name + ".json")).string());
-        CHECK(report.score() == 0.0);
+        if (expected.contains("score_at_least")) {
+            CHECK(report.score() >= expected.at("score_at_least").get<double>());
+            if (expected.contains("score_below")) CHECK(report.score() < expected.at("score_below").get<double>());
+        } else {
+            CHECK(report.score() == 0.0);
+        }
+        CHECK(report.maxScore() > 0.0);
         const TestResult* test = nullptr;
         for (const TestResult& t : report.tests)
             if (t.name == expected.at("test").get<std::string>()) test = &t;
         REQUIRE(test != nullptr);
         CAPTURE(test->reason);
+        CAPTURE(testOutput(*test));
         CHECK(testStatusName(test->status) == expected.at("status").get<std::string>());
         if (expected.contains("reason")) CHECK(test->reason.find(expected.at("reason").get<std::string>()) != std::string::npos);
         if (expected.contains("details")) CHECK(testOutput(*test).find(expected.at("details").get<std::string>()) != std::string::npos);

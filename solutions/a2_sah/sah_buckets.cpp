@@ -1,6 +1,6 @@
 // Reference solution: bucketed SAH, the lecture's pseudocode (docs/a2-sah.md#buckets).
-#include "solutions/a2_sah/box_accumulator.h"
-#include "solutions/a2_sah/sah_cost.h"
+#include "box_accumulator.h"
+#include "sah_cost.h"
 
 #include <algorithm>
 #include <array>

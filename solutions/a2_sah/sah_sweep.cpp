@@ -1,5 +1,5 @@
 // Reference solution: full-sweep SAH (docs/a2-sah.md#full-sweep).
-#include "solutions/a2_sah/sah_cost.h"
+#include "sah_cost.h"
 
 #include <algorithm>
 #include <limits>

@@ -1,0 +1,17 @@
+// The assignment stubs as committed (docs/grading.md, "Grading a submission"): what a file
+// missing from a submission is taken from. In a git checkout they are read from HEAD, never
+// from the working tree an instructor may have edited or filled in; a release or a Gradescope
+// zip has no .git, but was itself made from committed files only (rtlab release,
+// scripts/make-gradescope), so its assignments/ folder is the committed one.
+#pragma once
+
+#include <map>
+#include <string>
+
+namespace rtlab::grader {
+
+// Repository path ("assignments/a0_intersect/ray_box.cpp") -> contents. Throws rtlab::Error
+// when the stubs cannot be read.
+std::map<std::string, std::string> pristineStubs(const std::string& sourceDir);
+
+}  // namespace rtlab::grader
