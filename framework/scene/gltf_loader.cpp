@@ -8,10 +8,16 @@
 // point lights, baseColorFactor, emissiveFactor with KHR_materials_emissive_strength, and
 // analytic spheres from extras.rtlab.sphere. Textures are never used, so images are never
 // decoded.
+//
+// Limits on input: before tinygltf sees a document, its size, its JSON nesting and every
+// buffer's byteLength are checked against what the file can hold, and before anything is
+// instantiated the node graph is checked to be a forest of bounded depth. A hostile file ends in
+// one line naming it and the problem, never in a large allocation or a deep recursion.
 #include "framework/scene/gltf_loader.h"
 
 #include "framework/core/error.h"
 
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include <glm/gtc/quaternion.hpp>
@@ -19,11 +25,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <span>
+#include <string_view>
 
 namespace rtlab {
 namespace {
@@ -36,23 +46,168 @@ constexpr const char* kNormalsFeature = "vertex normals (smooth shading)";
 // Relative tolerance for "this transform scales uniformly" (spheres stay spheres).
 constexpr double kUniformScaleTolerance = 1e-6;
 
+// The largest file the loader reads: the scene itself and every file it names. The largest
+// scene rtlab writes (the sphereflake as .gltf) is about 40 MB.
+constexpr uint64_t kMaxFileBytes = uint64_t{1} << 30;
+// JSON nesting of arrays and objects: glTF's own schema needs fewer than ten levels, and
+// tinygltf copies extras and extensions recursively, so a deeper document is refused.
+constexpr int kMaxJsonDepth = 64;
+// Levels of the node hierarchy, far more than any modelling tool writes.
+constexpr size_t kMaxNodeDepth = 1000;
+
 // We never use textures: accept every image without decoding it.
 bool skipImageDecoding(tinygltf::Image*, const int, std::string*, std::string*, int, int,
                        const unsigned char*, int, void*) {
     return true;
 }
 
+// tinygltf's messages may quote a whole data URI: keep the first line, and only its start.
 std::string firstLine(const std::string& text) {
+    constexpr size_t kMaxLength = 200;
     std::string line = text.substr(0, text.find('\n'));
     while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+    if (line.size() > kMaxLength) line = line.substr(0, kMaxLength) + "...";
     return line;
 }
 
-bool startsWithGlbMagic(const std::string& path) {
-    std::ifstream file(path, std::ios::binary);
-    char magic[4] = {};
-    file.read(magic, 4);
-    return file.gcount() == 4 && std::memcmp(magic, "glTF", 4) == 0;
+bool startsWithGlbMagic(std::span<const unsigned char> bytes) {
+    return bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+}
+
+uint32_t readLittleEndian32(std::span<const unsigned char> bytes, size_t offset) {
+    return uint32_t{bytes[offset]} | uint32_t{bytes[offset + 1]} << 8 | uint32_t{bytes[offset + 2]} << 16 |
+           uint32_t{bytes[offset + 3]} << 24;
+}
+
+// The whole file, refused beyond kMaxFileBytes or when it is not a regular file (a FIFO or a
+// device named by a hostile uri would block or never end).
+bool readWholeFile(const std::string& path, std::vector<unsigned char>* out, std::string* problem) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error)) {
+        *problem = "not a regular file";
+        return false;
+    }
+    uintmax_t size = std::filesystem::file_size(path, error);
+    if (error || size > kMaxFileBytes) {
+        *problem = error ? "cannot read its size" : "larger than the loader's limit of " +
+                                                        std::to_string(kMaxFileBytes >> 20) + " MiB";
+        return false;
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        *problem = "cannot open the file";
+        return false;
+    }
+    out->resize(static_cast<size_t>(size));
+    if (!in.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size))) {
+        *problem = "read error";
+        return false;
+    }
+    return true;
+}
+
+// tinygltf's test for the files a document names; its own opens them, which blocks on a FIFO.
+bool referencedFileExists(const std::string& path, void*) {
+    std::error_code error;
+    return std::filesystem::exists(path, error);
+}
+
+// tinygltf's reader of the files a document names (buffers, images), with readWholeFile's limits.
+bool readReferencedFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+    std::string problem;
+    if (readWholeFile(path, out, &problem)) return true;
+    if (err) *err += path + ": " + problem + "\n";
+    return false;
+}
+
+// The parts of a .glb container: its JSON chunk and the size of its BIN chunk (0 if none).
+struct GlbChunks {
+    std::string_view json;
+    uint64_t binBytes = 0;
+};
+
+// Checks the 12-byte header and the chunk table, so that nothing after it reads past the file.
+std::optional<GlbChunks> splitGlb(std::span<const unsigned char> bytes, std::string* problem) {
+    constexpr size_t kHeaderBytes = 12, kChunkHeaderBytes = 8;
+    constexpr uint32_t kJsonChunk = 0x4E4F534A, kBinChunk = 0x004E4942;
+    if (bytes.size() < kHeaderBytes + kChunkHeaderBytes) {
+        *problem = "GLB file of " + std::to_string(bytes.size()) + " bytes is too short for its header";
+        return std::nullopt;
+    }
+    if (readLittleEndian32(bytes, 4) != 2) {
+        *problem = "GLB version " + std::to_string(readLittleEndian32(bytes, 4)) + " is not supported (2 only)";
+        return std::nullopt;
+    }
+    uint64_t declared = readLittleEndian32(bytes, 8);
+    if (declared > bytes.size()) {
+        *problem = "GLB header declares " + std::to_string(declared) + " bytes, the file has " +
+                   std::to_string(bytes.size());
+        return std::nullopt;
+    }
+    GlbChunks chunks;
+    uint64_t jsonBytes = readLittleEndian32(bytes, kHeaderBytes);
+    if (readLittleEndian32(bytes, kHeaderBytes + 4) != kJsonChunk ||
+        jsonBytes > declared - kHeaderBytes - kChunkHeaderBytes) {
+        *problem = "GLB file does not start with a JSON chunk that fits in it";
+        return std::nullopt;
+    }
+    chunks.json = std::string_view(reinterpret_cast<const char*>(bytes.data()) + kHeaderBytes + kChunkHeaderBytes,
+                                   static_cast<size_t>(jsonBytes));
+    uint64_t next = kHeaderBytes + kChunkHeaderBytes + jsonBytes;
+    if (declared - next >= kChunkHeaderBytes && readLittleEndian32(bytes, next + 4) == kBinChunk) {
+        chunks.binBytes = readLittleEndian32(bytes, next);
+        if (chunks.binBytes > declared - next - kChunkHeaderBytes) {
+            *problem = "GLB BIN chunk of " + std::to_string(chunks.binBytes) + " bytes reaches past the end of the file";
+            return std::nullopt;
+        }
+    }
+    return chunks;
+}
+
+// At most how many bytes a buffer's data can hold: a data URI's base64 payload, the GLB BIN
+// chunk, or (for an external file) the file limit, which readReferencedFile enforces.
+uint64_t bytesBehindBuffer(const nlohmann::json& buffer, size_t index, const GlbChunks* glb) {
+    auto uri = buffer.find("uri");
+    if (uri == buffer.end() || !uri->is_string()) return index == 0 && glb ? glb->binBytes : 0;
+    const std::string& text = uri->get_ref<const std::string&>();
+    if (text.rfind("data:", 0) != 0) return kMaxFileBytes;
+    size_t comma = text.find(',');
+    return comma == std::string::npos ? 0 : (text.size() - comma - 1) / 4 * 3 + 3;
+}
+
+// The checks made on the document before tinygltf parses it (see the top of this file).
+void checkDocumentLimits(const std::string& path, std::span<const unsigned char> bytes, bool binary) {
+    auto fail = [&](const std::string& problem) { throw Error(path + ": " + firstLine(problem)); };
+    std::string problem;
+    std::optional<GlbChunks> glb;
+    std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    if (binary) {
+        glb = splitGlb(bytes, &problem);
+        if (!glb) fail(problem);
+        text = glb->json;
+    }
+    auto limitDepth = [&](int depth, nlohmann::json::parse_event_t, nlohmann::json&) {
+        if (depth > kMaxJsonDepth)
+            fail("JSON nests deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+        return true;
+    };
+    nlohmann::json document;
+    try {
+        document = nlohmann::json::parse(text, limitDepth);
+    } catch (const nlohmann::json::exception& e) {
+        fail(e.what());
+    }
+    if (!document.is_object() || !document.contains("buffers") || !document["buffers"].is_array()) return;
+    const nlohmann::json& buffers = document["buffers"];
+    for (size_t i = 0; i < buffers.size(); ++i) {
+        if (!buffers[i].is_object() || !buffers[i].contains("byteLength")) continue;
+        const nlohmann::json& length = buffers[i]["byteLength"];
+        if (!length.is_number()) continue;  // tinygltf reports the type
+        uint64_t available = bytesBehindBuffer(buffers[i], i, glb ? &*glb : nullptr);
+        if (length.get<double>() > static_cast<double>(available))
+            fail("buffer " + std::to_string(i) + ": byteLength " + length.dump() + " is more than the " +
+                 std::to_string(available) + " bytes of data it can have");
+    }
 }
 
 const char* modeName(int mode) {
@@ -125,6 +280,7 @@ public:
         : path_(path), model_(model), scene_(scene), visited_(model.nodes.size(), false) {}
 
     void read() {
+        checkNodeGraph();
         checkVersionAndExtensions();
         readMaterials();
         for (const PendingNode& root : rootNodes()) visitTree(root);
@@ -233,6 +389,47 @@ private:
         return pending;
     }
 
+    // glTF nodes form a forest: every child index is valid, no node has two parents, no parent
+    // link closes a cycle, and no tree is deeper than kMaxNodeDepth. Checked over every node up
+    // front, so a cycle that no scene reaches is still an error.
+    void checkNodeGraph() const {
+        const size_t count = model_.nodes.size();
+        std::vector<int> parent(count, -1);
+        for (size_t i = 0; i < count; ++i)
+            for (int child : model_.nodes[i].children) {
+                element(model_.nodes, child, "node");
+                int& parentOfChild = parent[static_cast<size_t>(child)];
+                if (parentOfChild != -1)
+                    fail(describe("node", child, model_.nodes[static_cast<size_t>(child)].name) +
+                         " has two parents (nodes " + std::to_string(parentOfChild) + " and " + std::to_string(i) + ")");
+                parentOfChild = static_cast<int>(i);
+            }
+        // Depth 0 = not reached from a parentless node: with one parent each, such a node lies on
+        // a cycle of parent links.
+        std::vector<size_t> depth(count, 0);
+        std::vector<size_t> stack;
+        for (size_t root = 0; root < count; ++root) {
+            if (parent[root] != -1) continue;
+            depth[root] = 1;
+            stack.push_back(root);
+            while (!stack.empty()) {
+                size_t i = stack.back();
+                stack.pop_back();
+                if (depth[i] > kMaxNodeDepth)
+                    fail("the node hierarchy is deeper than " + std::to_string(kMaxNodeDepth) + " levels (at " +
+                         describe("node", static_cast<int>(i), model_.nodes[i].name) + ")");
+                for (int child : model_.nodes[i].children) {
+                    depth[static_cast<size_t>(child)] = depth[i] + 1;
+                    stack.push_back(static_cast<size_t>(child));
+                }
+            }
+        }
+        for (size_t i = 0; i < count; ++i)
+            if (depth[i] == 0)
+                fail(describe("node", static_cast<int>(i), model_.nodes[i].name) +
+                     " is on a cycle of the node hierarchy (it would be reached twice)");
+    }
+
     // Depth-first over the hierarchy with an explicit stack (deep files cannot overflow ours).
     // glTF nodes form strict trees, so reaching a node twice means a cycle or a shared child.
     void visitTree(const PendingNode& root) {
@@ -319,7 +516,7 @@ private:
         if (!mulFits(stride, data.count - 1, &span) || !addFits(span, elementSize, &span) ||
             !addFits(accessor.byteOffset, span, &end) || end > view.byteLength)
             fail(where + ": " + std::to_string(data.count) + " elements reach past the end of bufferView " +
-                 std::to_string(accessor.bufferView));
+                 std::to_string(accessor.bufferView) + " (" + std::to_string(view.byteLength) + " bytes)");
         data.first = buffer.data.data() + view.byteOffset + accessor.byteOffset;
         return data;
     }
@@ -511,22 +708,32 @@ private:
 }  // namespace
 
 Scene loadGltf(const std::string& path) {
-    if (!std::ifstream(path, std::ios::binary)) throw Error(path + ": cannot open the file");
+    std::vector<unsigned char> bytes;
+    std::string problem;
+    std::error_code missing;
+    if (!std::filesystem::exists(path, missing)) throw Error(path + ": cannot open the file");
+    if (!readWholeFile(path, &bytes, &problem)) throw Error(path + ": " + problem);
+    bool binary = startsWithGlbMagic(bytes);
+    checkDocumentLimits(path, bytes, binary);
 
     tinygltf::TinyGLTF parser;
     parser.SetImageLoader(skipImageDecoding, nullptr);
+    parser.SetFsCallbacks({&referencedFileExists, &tinygltf::ExpandFilePath, &readReferencedFile,
+                           &tinygltf::WriteWholeFile, nullptr});
     tinygltf::Model model;
     std::string error, warning;
-    bool binary = startsWithGlbMagic(path);
+    std::string baseDirectory = std::filesystem::path(path).parent_path().string();
+    auto size = static_cast<unsigned int>(bytes.size());  // at most kMaxFileBytes
     bool loaded = false;
     try {
-        loaded = binary ? parser.LoadBinaryFromFile(&model, &error, &warning, path)
-                        : parser.LoadASCIIFromFile(&model, &error, &warning, path);
+        loaded = binary ? parser.LoadBinaryFromMemory(&model, &error, &warning, bytes.data(), size, baseDirectory)
+                        : parser.LoadASCIIFromString(&model, &error, &warning, reinterpret_cast<const char*>(bytes.data()),
+                                                     size, baseDirectory);
     } catch (const std::exception& e) {  // e.g. a JSON library exception tinygltf lets through
         error = e.what();
     }
     if (!loaded || !error.empty()) {
-        std::string problem = firstLine(error);
+        problem = firstLine(error);
         throw Error(path + ": " + (problem.empty() ? "not a valid glTF 2.0 file" : problem));
     }
 

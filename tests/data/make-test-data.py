@@ -7,9 +7,11 @@ hierarchy.gltf / hierarchy.glb: a node tree (TRS root, a matrix child, a TRS chi
 non-uniform scale), interleaved POSITION+NORMAL with byteStride 24, u8 / u16 (accessor
 byteOffset 4) / u32 indices, a non-indexed primitive whose accessor skips a NaN through its
 byteOffset, a POINTS primitive (skipped), a camera, a 100 cd light and a sphere.
-The other files are each broken in one way.
+The other files are each broken in one way; huge-*, deep-* and cycle.gltf exceed the
+loader's input limits (tests/test_gltf_limits.cpp).
 """
 
+import base64
 import json
 import math
 import os
@@ -22,6 +24,8 @@ from gltf_builder import (ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, FLOAT, UNSIGNED_BY
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 GENERATOR = "rtlab tests/data/make-test-data.py"
+DEEP_HIERARCHY_LEVELS = 1001  # levels in all: one more than the loader's limit of 1000
+DEEP_JSON_LEVELS = 10000      # far beyond the loader's JSON depth limit of 64
 
 
 def hierarchy():
@@ -72,12 +76,18 @@ def hierarchy():
     return g
 
 
+def finite_bounds(positions):
+    """POSITION min and max, as glTF requires them, over the finite coordinates."""
+    finite = [[c for c in axis if math.isfinite(c)] for axis in zip(*positions)]
+    return [min(axis) for axis in finite], [max(axis) for axis in finite]
+
+
 def one_triangle(positions=((0, 0, 0), (1, 0, 0), (0, 1, 0)), indices=(0, 1, 2)):
     """A minimal valid file; the broken ones below change one thing in it."""
     g = GltfBuilder(GENERATOR)
     payload = b"".join(struct.pack("<3f", *p) for p in positions)
     view = g.add_buffer_view(payload, ARRAY_BUFFER)
-    accessor = g.add_accessor(view, FLOAT, "VEC3", len(positions))
+    accessor = g.add_accessor(view, FLOAT, "VEC3", len(positions), bounds=finite_bounds(positions))
     g.doc["meshes"] = [{"name": "tri", "primitives": [
         {"attributes": {"POSITION": accessor}, "indices": g.add_index_accessor([indices])}]}]
     g.add_node("triangle", mesh=0)
@@ -120,11 +130,38 @@ def main():
     squashed.add_sphere("egg", 1.0, 0, scale=[1, 2, 1])
     squashed.write(os.path.join(HERE, "nonuniform-sphere.gltf"))
 
+    # Two nodes that are each other's child, which no scene lists: only a check of the whole
+    # node graph finds them.
     cycle = one_triangle()
-    cycle.add_node("a", mesh=0)
-    cycle.add_node("b", parent=1)
-    cycle.doc["nodes"][2]["children"] = [1]
+    cycle.doc["nodes"] += [{"name": "a", "mesh": 0, "children": [2]}, {"name": "b", "children": [1]}]
     cycle.write(os.path.join(HERE, "cycle.gltf"))
+
+    # The input limits (docs/scenes.md): each file asks for far more than it holds.
+    huge = one_triangle()
+    finished_doc = huge._finished_doc
+
+    def claiming_a_terabyte(uri):
+        doc = finished_doc(uri)
+        doc["buffers"][0]["byteLength"] = 1 << 40
+        return doc
+
+    huge._finished_doc = claiming_a_terabyte
+    huge.write(os.path.join(HERE, "huge-buffer.gltf"))
+    huge.write(os.path.join(HERE, "huge-buffer.glb"))
+
+    many = one_triangle()
+    many.doc["accessors"][0]["count"] = (1 << 32) - 3  # a multiple of 3 just under 2^32
+    many.write(os.path.join(HERE, "huge-accessor-count.gltf"))
+
+    deep = one_triangle()
+    for level in range(2, DEEP_HIERARCHY_LEVELS + 1):  # the triangle is level 1
+        deep.add_node("level%d" % level, parent=len(deep.doc["nodes"]) - 1)
+    deep.write(os.path.join(HERE, "deep-hierarchy.gltf"))
+
+    nested = one_triangle()
+    nested.doc["nodes"][0]["extras"] = {"nested": "NESTED"}  # Python's json module recurses
+    write_text("deep-json.gltf", nested.gltf_text().replace(
+        '"NESTED"', "[" * DEEP_JSON_LEVELS + "]" * DEEP_JSON_LEVELS))
 
 
 if __name__ == "__main__":
