@@ -27,10 +27,10 @@ std::unique_ptr<Accelerator> makeAccelerator(const AcceleratorSpec& spec) {
     // <layout>-<method>: the tree bvh-<method> builds, traversed by the layout named before the
     // dash (bvh is the binary traversal, others are registered in bvh_layouts.h).
     size_t dash = spec.name.find('-');
-    std::string prefix = spec.name.substr(0, dash);
+    std::string prefix = dash == std::string::npos ? "" : spec.name.substr(0, dash);
     const BvhLayout* layout = findBvhLayout(prefix);
     // An executable without the fast paths names them; one with them lists what it has.
-    if (!layout && bvhLayouts().empty() && isWideBvhPrefix(prefix) && dash != std::string::npos)
+    if (!layout && bvhLayouts().empty() && isWideBvhPrefix(prefix))
         throw Error("--accel " + spec.name +
                     ": the wide BVHs are fast paths, built only into rtlab-solution and the benchmarks");
     std::string name = layout ? "bvh" + spec.name.substr(dash) : spec.name;

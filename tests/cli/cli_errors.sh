@@ -67,6 +67,8 @@ one_line_naming "bvh4-sah" "recursive traversal of the wide BVH"
 # The student binary does not link the fast paths (fast/): their names say where they are.
 expect 1 "a wide BVH in the student binary" -- "$student" render "$scene" -o "$work/x.png" --accel bvh4-sah
 one_line_naming "only into rtlab-solution" "a wide BVH in the student binary"
+expect 1 "a wide BVH without a split method" -- "$solution" render "$scene" -o "$work/x.png" --accel bvh4
+one_line_naming "bvh4 is not an accelerator" "a wide BVH without a split method"
 "$student" render --help | grep -q "bvh4" && { echo "FAIL: rtlab render --help offers bvh4"; failures=$((failures + 1)); }
 "$solution" render --help | grep -q "bvh4-<method>" || { echo "FAIL: rtlab-solution render --help lacks bvh4"; failures=$((failures + 1)); }
 
