@@ -13,6 +13,8 @@ namespace rtlab {
 
 namespace {
 
+constexpr double kZNear = 1e-3;
+
 class GltfBuilder {
 public:
     explicit GltfBuilder(const Scene& scene) : scene_(scene) {
@@ -132,7 +134,8 @@ private:
         camera.type = "perspective";
         camera.perspective.yfov = source.yfov;
         camera.perspective.aspectRatio = source.aspectRatio;
-        camera.perspective.znear = 1e-3;
+        camera.perspective.znear = kZNear;
+        camera.perspective.zfar = farPlane(source.position);
         model_.cameras.push_back(camera);
 
         // A glTF camera looks down its local -Z with +Y up.
@@ -146,6 +149,20 @@ private:
         node.translation = {source.position.x, source.position.y, source.position.z};
         node.rotation = {rotation.x, rotation.y, rotation.z, rotation.w};
         addNode(node);
+    }
+
+    // rtlab's rays are unbounded and it never reads zfar, but tinygltf always writes it and glTF
+    // requires zfar > znear when present (0, tinygltf's "infinite", is invalid): a plane beyond
+    // everything in the scene keeps other tools' views complete.
+    double farPlane(const DVec3& eye) const {
+        Bounds3f bounds = scene_.bounds();
+        double farthest = 0.0;
+        if (!bounds.isEmpty())
+            for (int corner = 0; corner < 8; ++corner) {
+                DVec3 p(bounds[corner & 1].x, bounds[(corner >> 1) & 1].y, bounds[(corner >> 2) & 1].z);
+                farthest = std::max(farthest, glm::length(p - eye));
+            }
+        return std::max(2.0 * farthest, 1000.0 * kZNear);
     }
 
     void addLight(const PointLight& source) {
