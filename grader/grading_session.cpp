@@ -16,7 +16,9 @@ void mergeSameNamed(std::vector<TestResult>& results) {
     std::vector<TestResult> merged;
     std::map<std::string, size_t> position;
     std::map<std::string, size_t> parts;
+    std::map<std::string, std::string> notStarted;  // test -> the reason of its first part not started
     for (TestResult& r : results) {
+        if (r.status == TestStatus::NotStarted) notStarted.try_emplace(r.name, r.reason);
         auto [it, inserted] = position.try_emplace(r.name, merged.size());
         if (inserted) {
             parts[r.name] = 1;
@@ -34,6 +36,14 @@ void mergeSameNamed(std::vector<TestResult>& results) {
         if (m.status != TestStatus::Failed && (r.status == TestStatus::Failed || m.status == TestStatus::Passed)) m.reason = r.reason;
         m.status = TestStatus::Failed;
     }
+    // A test that meets a stub not started anywhere is not started: scenes that happen not to
+    // call the stub (a leaf from the framework's rules) earn nothing on their own.
+    for (TestResult& m : merged)
+        if (m.status != TestStatus::NotStarted && notStarted.count(m.name)) {
+            m.status = TestStatus::NotStarted;
+            m.fraction = 0.0;
+            m.reason = notStarted[m.name];
+        }
     results = std::move(merged);
 }
 

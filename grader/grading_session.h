@@ -32,8 +32,8 @@ struct GradingOptions {
 GradingReport gradeWorker(const GradingOptions& options);
 
 // Merges results that share a name (one per scene) into one test: passed when all passed,
-// not started when all are, otherwise failed with the first failure's reason; the fraction is
-// the mean, so each scene carries an equal share of the points.
+// not started when any part is, otherwise failed with the first failure's reason; the
+// fraction is the mean, so each scene carries an equal share of the points.
 void mergeSameNamed(std::vector<TestResult>& results);
 
 }  // namespace rtlab::grader

@@ -20,10 +20,36 @@ std::string describeRay(const Ray& ray) {
 
 namespace {
 
+// Beyond this the ray is so nearly in the triangle's plane that any answer is plausible.
+constexpr double kMaxRoundingSlack = 1.0;
+
 std::string formatT(double t) {
     char buffer[48];
     std::snprintf(buffer, sizeof buffer, "%.9g", t);
     return buffer;
+}
+
+}  // namespace
+
+namespace {
+
+// How far outside a triangle (in barycentric units) a float watertight test may still find a
+// hit, or inside it a miss, whatever order of rounding it uses (t = x / det or x * (1 / det),
+// fused or not): its edge functions are products of lateral vertex coordinates that carry the
+// rounding of the translation and the shear, a few ulps of |v| + |o|, and they are divided by
+// det, twice the triangle's area as the ray sees it, which is small for grazing rays.
+double roundingSlack(const std::array<Vec3, 3>& v, const OracleRay& ray) {
+    DVec3 direction = glm::normalize(ray.direction);
+    double scale = 0.0, lateral = 0.0;
+    std::array<DVec3, 3> p;
+    for (int i = 0; i < 3; ++i) {
+        p[i] = DVec3(v[i]) - ray.origin;
+        scale = std::max(scale, glm::length(DVec3(v[i])) + glm::length(ray.origin));
+        lateral += glm::length(p[i] - glm::dot(p[i], direction) * direction);
+    }
+    double det = std::abs(glm::dot(direction, glm::cross(p[1] - p[0], p[2] - p[0])));
+    constexpr double kUlps = 8.0 * 0x1p-24;
+    return det > 0.0 ? kUlps * scale * lateral / det : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace
@@ -39,7 +65,8 @@ std::vector<HitJudge::Candidate> HitJudge::findCandidates(const Ray& ray) const 
     if (!(length > 0) || !std::isfinite(length)) return found;
     double originScale = glm::length(exact.origin) / length;
     for (uint32_t prim = 0; prim < scene_.primitiveCount(); ++prim) {
-        auto hit = oracle_.intersect(prim, exact, kEdgeSlack);
+        double rounding = scene_.isSphere(prim) ? 0.0 : roundingSlack(scene_.triangleVertices(prim), exact);
+        auto hit = oracle_.intersect(prim, exact, kEdgeSlack + std::min(rounding, kMaxRoundingSlack));
         if (!hit) continue;
         Candidate c{prim, hit->t, 0.0, false};
         if (scene_.isSphere(prim)) {
@@ -54,7 +81,7 @@ std::vector<HitJudge::Candidate> HitJudge::findCandidates(const Ray& ray) const 
             double cosine = std::abs(glm::dot(hit->normal, exact.direction)) / length;
             auto v = scene_.triangleVertices(prim);
             double size = glm::length(DVec3(v[1] - v[0])) + glm::length(DVec3(v[2] - v[0]));
-            c.robust = hit->edgeMargin >= kRobustMargin;
+            c.robust = hit->edgeMargin >= std::max(kRobustMargin, rounding);
             c.tolerance = 1e-6 * std::abs(hit->t) +
                           4e-6 * (std::abs(hit->t) + originScale + size / length) / std::max(cosine, 1e-4);
         }

@@ -18,6 +18,18 @@ using namespace rtlab::grader;
 
 namespace {
 
+void applyPatch(const fs::path& submission, const nlohmann::json& patch) {
+    fs::path file = submission / patch.at("file").get<std::string>();
+    std::ifstream in(file);
+    std::string text(std::istreambuf_iterator<char>(in), {});
+    std::string from = patch.at("replace"), to = patch.at("with");
+    size_t replaced = 0;
+    for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()), ++replaced) text.replace(at, from.size(), to);
+    std::string problem = file.string() + " no longer contains the patched text " + from;
+    REQUIRE_MESSAGE(replaced > 0, problem);
+    std::ofstream(file) << text;
+}
+
 // The submissions folder the batch grades: each fixture as it is, or laid over a copy of the
 // reference solutions when it says with_solutions.
 fs::path assembleSubmissions(const nlohmann::json& fixtures, const fs::path& source, const fs::path& into) {
@@ -26,7 +38,9 @@ fs::path assembleSubmissions(const nlohmann::json& fixtures, const fs::path& sou
         fs::create_directories(target / "assignments");
         if (expected.value("with_solutions", false))
             fs::copy(source / "solutions", target / "assignments", fs::copy_options::recursive);
-        fs::copy(source / "grader/fixtures" / name, target, fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+        if (fs::exists(source / "grader/fixtures" / name))
+            fs::copy(source / "grader/fixtures" / name, target, fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+        if (expected.contains("patch")) applyPatch(target, expected.at("patch"));
     }
     return into;
 }
