@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <fstream>
 
@@ -31,6 +32,15 @@ bool globMatches(const std::string& pattern, const std::string& text) {
     return p == pattern.size();
 }
 
+namespace {
+
+// Text from the file, quoted and escaped as JSON, so that a message about it stays on one line.
+std::string asJsonString(const std::string& text) {
+    return nlohmann::json(text).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+}  // namespace
+
 Rubric Rubric::load(const std::string& path) {
     std::ifstream in(path);
     if (!in) throw Error(path + ": cannot read the rubric");
@@ -41,16 +51,17 @@ Rubric Rubric::load(const std::string& path) {
             RubricRule r{rule.at("match").get<std::string>(), rule.at("points").get<double>(), rule.value("visibility", "visible")};
             if (r.visibility != "visible" && r.visibility != "hidden" && r.visibility != "after_due_date" &&
                 r.visibility != "after_published")
-                throw Error(path + ": rule \"" + r.pattern + "\" has visibility \"" + r.visibility +
-                            "\" (valid: visible, hidden, after_due_date, after_published)");
-            if (!(r.points >= 0)) throw Error(path + ": rule \"" + r.pattern + "\" has negative points");
+                throw Error(path + ": rule " + asJsonString(r.pattern) + " has visibility " + asJsonString(r.visibility) +
+                            " (valid: visible, hidden, after_due_date, after_published)");
+            if (!(r.points >= 0)) throw Error(path + ": rule " + asJsonString(r.pattern) + " has negative points");
             rubric.rules_.push_back(r);
         }
         if (json.contains("precision")) {
             const auto& precision = json.at("precision");
-            if (!precision.is_number_integer() || precision.get<int>() < 0 || precision.get<int>() > 6)
+            // Compared as a 64-bit number: get<int>() would read 4294967298 as 2.
+            if (!precision.is_number_integer() || precision.get<int64_t>() < 0 || precision.get<int64_t>() > 6)
                 throw Error(path + ": \"precision\" must be a whole number of decimals from 0 to 6");
-            rubric.precision_ = precision.get<int>();
+            rubric.precision_ = static_cast<int>(precision.get<int64_t>());
         }
     } catch (const nlohmann::json::exception& e) {
         throw Error(path + ": malformed rubric (" + e.what() + ")");

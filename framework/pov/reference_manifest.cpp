@@ -5,7 +5,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <fstream>
+#include <limits>
 
 namespace rtlab {
 namespace fs = std::filesystem;
@@ -22,7 +24,19 @@ json toJson(const ReferenceEntry& e) {
                 {"image_sha256", e.imageSha256}};
 }
 
-ReferenceEntry fromJson(const std::string& name, const json& j) {
+// nlohmann's get<int>() casts whatever number it finds: 1e300 would be undefined behaviour and
+// 4294967297 would read as 1. Only a whole number that fits an int is taken.
+int wholeNumber(const json& value, const std::string& what) {
+    if (!value.is_number_integer() || value.get<int64_t>() < 0 ||
+        value.get<int64_t>() > std::numeric_limits<int>::max())
+        throw Error(what + " must be a whole number from 0 to " + std::to_string(std::numeric_limits<int>::max()) +
+                    ", not " + value.dump().substr(0, 40));
+    return static_cast<int>(value.get<int64_t>());
+}
+
+ReferenceEntry fromJson(const std::string& path, const std::string& name, const json& j) {
+    // The name comes from the file: quoted and escaped as JSON, so the message stays one line.
+    std::string where = path + ": reference " + json(name).dump(-1, ' ', false, json::error_handler_t::replace) + ": ";
     ReferenceEntry e;
     e.name = name;
     e.scene = j.at("scene").get<std::string>();
@@ -30,8 +44,8 @@ ReferenceEntry fromJson(const std::string& name, const json& j) {
     e.camera = j.at("camera").get<std::string>();
     e.exporter = j.at("exporter").get<std::string>();
     e.povray = j.at("povray").get<std::string>();
-    e.width = j.at("width").get<int>();
-    e.height = j.at("height").get<int>();
+    e.width = wholeNumber(j.at("width"), where + "width");
+    e.height = wholeNumber(j.at("height"), where + "height");
     e.settings = j.at("settings").get<std::string>();
     e.image = j.at("image").get<std::string>();
     e.imageSha256 = j.at("image_sha256").get<std::string>();
@@ -50,10 +64,11 @@ ReferenceManifest ReferenceManifest::load(const fs::path& path) {
     std::ifstream in(path);
     try {
         json j = json::parse(in);
-        if (j.at("format").get<int>() != kManifestFormat)
+        if (wholeNumber(j.at("format"), path.string() + ": manifest format") != kManifestFormat)
             throw Error(path.string() + ": manifest format " + j.at("format").dump() + " is not " +
                         std::to_string(kManifestFormat));
-        for (const auto& [name, entry] : j.at("references").items()) manifest.entries[name] = fromJson(name, entry);
+        for (const auto& [name, entry] : j.at("references").items())
+            manifest.entries[name] = fromJson(path.string(), name, entry);
     } catch (const json::exception& e) {
         throw Error(path.string() + ": malformed reference manifest: " + e.what());
     }
