@@ -2,6 +2,7 @@
 
 #include "framework/core/error.h"
 #include "grader/system_call_filter.h"
+#include "grader/worker_conversation.h"
 #include "grader/worker/worker_protocol.h"
 
 #include <algorithm>
@@ -28,7 +29,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 using worker::RecordKind;
 
-constexpr uint64_t kMaxPayload = uint64_t(1) << 30;
 constexpr size_t kMaxCapturedOutput = 4096;
 constexpr uint64_t kWorkerBaseMiB = 64;  // the worker's own code, stacks and the C runtime
 constexpr uid_t kNobody = 65534;
@@ -101,7 +101,8 @@ public:
 
     // Runs phase 0 and then the phases in order.
     void execute(std::vector<size_t> order) {
-        order_ = std::move(order);
+        order_ = order;
+        conversation_.emplace(std::move(order));
         int requestPipe[2], resultPipe[2], outputPipe[2];
         if (pipe2(requestPipe, O_CLOEXEC) != 0 || pipe2(resultPipe, O_CLOEXEC) != 0 || pipe2(outputPipe, O_CLOEXEC) != 0)
             throw Error(std::string("grader: cannot create a pipe: ") + std::strerror(errno));
@@ -119,7 +120,7 @@ public:
         fcntl(requestFd_, F_SETFL, O_NONBLOCK);
         startedAt_ = Clock::now();
         deadline_ = startedAt_ + seconds(kStartSeconds);
-        queueRequest(0);
+        queueRequest();
         converse(resultPipe[0], outputPipe[0]);
         if (requestFd_ >= 0) close(requestFd_);
         close(resultPipe[0]);
@@ -129,13 +130,15 @@ public:
 
     const std::vector<PhaseOutcome>& outcomes() const { return outcomes_; }
     const std::vector<bool>& reported() const { return reported_; }
-    bool finished() const { return done_ && !overran_ && !malformed_; }
+    bool finished() const { return conversation_->done() && !overran_ && !malformed(); }
 
 private:
-    // Queues the request of order_[step], or the end of the request after the last one. Each
-    // phase's deadline starts here and is set once: no record moves it.
-    void queueRequest(size_t step) {
-        step_ = step;
+    bool malformed() const { return conversation_->malformed(); }
+
+    // Queues the request of the conversation's current phase, or the end of the request after
+    // the last one. Each phase's deadline starts here and is set once: no record moves it.
+    void queueRequest() {
+        size_t step = conversation_->step();
         if (step >= order_.size()) {
             put<uint32_t>(worker::kEndOfRequest);
             deadline_ = Clock::now() + seconds(kStartSeconds);
@@ -149,7 +152,6 @@ private:
         pendingRequest_.insert(pendingRequest_.end(), phase.input.begin(), phase.input.end());
         phaseRequestedAt_ = Clock::now();
         deadline_ = phaseRequestedAt_ + seconds(spec_.limits.wallSeconds);
-        phaseStarted_ = false;
     }
 
     template <typename T>
@@ -158,12 +160,10 @@ private:
         pendingRequest_.insert(pendingRequest_.end(), p, p + sizeof value);
     }
 
-    std::optional<size_t> currentPhase() const { return step_ < order_.size() ? std::optional(order_[step_]) : std::nullopt; }
-
     void converse(int resultFd, int outputFd) {
         bool open[2] = {true, true};
         std::vector<uint8_t> buffer(1 << 16);
-        while ((open[0] || open[1]) && !malformed_ && !done_) {
+        while ((open[0] || open[1]) && !malformed() && !conversation_->done()) {
             auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline_ - Clock::now()).count();
             if (left <= 0) {
                 overran_ = true;
@@ -185,8 +185,12 @@ private:
                     continue;
                 }
                 if (i == 0) {
-                    pendingRecords_.insert(pendingRecords_.end(), buffer.begin(), buffer.begin() + n);
-                    parseRecords();
+                    // Each verdict is answered before the records after it are read.
+                    auto events = conversation_->feed(std::span(buffer.data(), size_t(n)));
+                    while (!events.empty()) {
+                        for (const WorkerEvent& event : events) handle(event);
+                        events = conversation_->feed({});
+                    }
                 } else {
                     size_t room = kMaxCapturedOutput - std::min(kMaxCapturedOutput, run_.output.size());
                     run_.output.append(reinterpret_cast<const char*>(buffer.data()), std::min<size_t>(room, size_t(n)));
@@ -205,53 +209,16 @@ private:
         }
     }
 
-    void parseRecords() {
-        size_t position = 0;
-        while (pendingRecords_.size() - position >= worker::kRecordHeaderSize && !malformed_ && !done_) {
-            const uint8_t* header = pendingRecords_.data() + position;
-            uint32_t phase;
-            uint64_t size;
-            std::memcpy(&phase, header + 1, 4);
-            std::memcpy(&size, header + 5, 8);
-            if (header[0] < worker::kFirstRecordKind || header[0] > worker::kLastRecordKind || size > kMaxPayload) {
-                malformed_ = true;
-                return;
-            }
-            if (pendingRecords_.size() - position - worker::kRecordHeaderSize < size) break;
-            handle(static_cast<RecordKind>(header[0]), phase, std::span(header + worker::kRecordHeaderSize, size));
-            position += worker::kRecordHeaderSize + size;
-        }
-        pendingRecords_.erase(pendingRecords_.begin(), pendingRecords_.begin() + static_cast<std::ptrdiff_t>(position));
-    }
-
-    // The records must follow the conversation: the current phase starts once, then ends with
-    // one verdict; Done only after the end of the request. Anything else is malformed.
-    void handle(RecordKind kind, uint32_t phase, std::span<const uint8_t> payload) {
-        auto current = currentPhase();
-        if (kind == RecordKind::Done) {
-            if (current || !payload.empty()) malformed_ = true;
-            else done_ = true;
-            return;
-        }
-        if (!current || phase != *current) {
-            malformed_ = true;
-            return;
-        }
-        if (kind == RecordKind::PhaseStart) {
-            if (phaseStarted_ || !payload.empty()) malformed_ = true;
-            phaseStarted_ = true;
-            cpuAtStart_ = processCpuSeconds(pid_);
-            return;
-        }
+    void handle(const WorkerEvent& event) {
+        if (event.kind == WorkerEvent::Kind::Started) cpuAtStart_ = processCpuSeconds(pid_);
+        if (event.kind != WorkerEvent::Kind::Verdict) return;
+        size_t phase = event.phase;
+        const std::vector<uint8_t>& payload = event.payload;
         PhaseOutcome& outcome = outcomes_[phase];
         const std::string stub = blame(phase);
         std::string text(payload.begin(), payload.end());
-        switch (kind) {
+        switch (event.record) {
         case RecordKind::PhaseData:
-            if (!phaseStarted_) {
-                malformed_ = true;
-                return;
-            }
             outcome.status = PhaseStatus::Completed;
             outcome.data.assign(payload.begin(), payload.end());
             break;
@@ -275,15 +242,19 @@ private:
                              ": student code may not open files, start processes or use the network";
             break;
         }
-        default: malformed_ = true; return;
+        default: return;
         }
         finishPhase(phase);
-        if (kind != RecordKind::Forbidden) queueRequest(step_ + 1);
+        // A forbidden call ends the worker; every other verdict lets it go on.
+        if (event.record != RecordKind::Forbidden) {
+            conversation_->advance();
+            queueRequest();
+        }
     }
 
     // Before the worker has read phase 0, only code that runs at start-up can be running.
     std::string blame(size_t phase) const {
-        if (phase == order_.front() && step_ == 0 && !phaseStarted_)
+        if (phase == order_.front() && conversation_->step() == 0 && !conversation_->started())
             return "code that runs before any test (a global object's constructor or an initialiser)";
         return phases_[phase].stub;
     }
@@ -298,7 +269,7 @@ private:
 
     int reap() {
         int status = 0;
-        while (!overran_ && !malformed_) {
+        while (!overran_ && !malformed()) {
             pid_t r = waitpid(pid_, &status, WNOHANG);
             if (r == pid_) return status;
             if (Clock::now() >= deadline_) {
@@ -313,12 +284,12 @@ private:
     }
 
     void judgeEnding(int status) {
-        auto phase = currentPhase();
+        auto phase = conversation_->currentPhase();
         if (!phase || reported_[*phase]) return;
         PhaseOutcome& outcome = outcomes_[*phase];
         const std::string stub = blame(*phase);
         int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-        if (malformed_) {
+        if (malformed()) {
             outcome.status = PhaseStatus::Failed;
             outcome.reason = "sent malformed results from " + stub;
         } else if (overran_) {
@@ -354,16 +325,13 @@ private:
     std::vector<PhaseOutcome> outcomes_;
     std::vector<bool> reported_;
     std::vector<size_t> order_;
-    size_t step_ = 0;
-    std::vector<uint8_t> pendingRequest_, pendingRecords_;
+    std::optional<WorkerConversation> conversation_;
+    std::vector<uint8_t> pendingRequest_;
     pid_t pid_ = -1;
     int requestFd_ = -1;
     Clock::time_point startedAt_, phaseRequestedAt_, deadline_;
     std::optional<double> cpuAtStart_;
-    bool phaseStarted_ = false;
-    bool done_ = false;
     bool overran_ = false;
-    bool malformed_ = false;
 };
 
 }  // namespace
