@@ -27,6 +27,7 @@ GradingReport displaySafe(const GradingReport& report) {
     GradingReport safe = report;
     safe.implementation = line(report.implementation);
     safe.studentOutput = escapeUntrusted(report.studentOutput, TextLayout::Lines);
+    safe.isolation = escapeUntrusted(report.isolation, TextLayout::Lines);
     for (TestResult& t : safe.tests) {
         t.assignment = line(t.assignment);
         t.name = line(t.name);

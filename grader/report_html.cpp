@@ -69,6 +69,7 @@ void writeHtmlReport(const GradingReport& untrusted, const std::string& director
     }
     if (!report.studentOutput.empty())
         html << "<h2>What your code printed</h2>\n<pre>" << escapeMarkup(report.studentOutput) << "</pre>\n";
+    if (!report.isolation.empty()) html << "<h2>Isolation</h2>\n<p>" << escapeMarkup(report.isolation) << "</p>\n";
     html << "</body></html>\n";
     std::string path = (fs::path(directory) / "index.html").string();
     std::ofstream out(path, std::ios::binary);

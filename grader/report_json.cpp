@@ -43,6 +43,7 @@ void writeJsonReport(const GradingReport& untrusted, const std::string& path) {
     json["seed"] = report.seed;
     json["execution_time"] = report.seconds;
     json["student_output"] = report.studentOutput;
+    json["isolation"] = report.isolation;
     json["tests"] = nlohmann::ordered_json::array();
     for (const TestResult& t : report.tests) {
         nlohmann::ordered_json images = nlohmann::ordered_json::array();
@@ -73,6 +74,7 @@ GradingReport readJsonReport(const std::string& path) {
         report.seed = json.value("seed", uint64_t(0));
         report.seconds = json.value("execution_time", 0.0);
         report.studentOutput = json.value("student_output", "");
+        report.isolation = json.value("isolation", "");
         for (const auto& t : json.at("tests")) {
             TestResult r;
             r.name = t.at("name").get<std::string>();

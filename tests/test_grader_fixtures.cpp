@@ -76,6 +76,8 @@ TEST_CASE("grader fixtures: every hostile or broken submission gets its verdict 
             CHECK(report.score() == 0.0);
         }
         CHECK(report.maxScore() > 0.0);
+        CHECK(report.isolation.find("a seccomp filter loaded at its first instruction") != std::string::npos);
+        CHECK(report.isolation.find("bubblewrap mount namespace") != std::string::npos);
         const TestResult* test = nullptr;
         for (const TestResult& t : report.tests)
             if (t.name == expected.at("test").get<std::string>()) test = &t;
