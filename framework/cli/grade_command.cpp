@@ -1,11 +1,16 @@
 // rtlab grade (docs/grading.md): grades the implementation linked into this executable
 // (rtlab: assignments/, rtlab-solution: solutions/), a student's submission folder, or a
-// folder of submissions, and writes the reports asked for.
+// folder of submissions (or one shard of it), and writes the reports asked for;
+// `rtlab grade merge` joins per-student reports into the CSV.
 #include "framework/cli/commands.h"
 #include "framework/core/error.h"
+#include "grader/batch_grading.h"
+#include "grader/grades_csv.h"
 #include "grader/grading_session.h"
+#include "grader/rubric.h"
 #include "grader/submission_grading.h"
 
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <unistd.h>
@@ -17,13 +22,80 @@ namespace fs = std::filesystem;
 
 struct GradeFlags {
     grader::GradingOptions grading;
-    std::string json, gradescope, junit, html, submission, submissions, csv;
+    std::string json, gradescope, junit, html, submission, submissions, csv, reports, shard;
     std::string label;
     int jobs = 2;
+    double secondsPerSubmission = 900;
+    double failUnder = -1;  // percent; negative: not asked for
+    bool force = false;
     bool quiet = false;
 };
 
+struct MergeFlags {
+    std::vector<std::string> reportFolders;
+    std::string csv, rubric;
+};
+
 fs::path executableDir() { return fs::read_symlink("/proc/self/exe").parent_path(); }
+
+std::string rubricPath(const grader::GradingOptions& g) {
+    return g.rubricPath.empty() ? g.sourceDir + "/grader/rubric.json" : g.rubricPath;
+}
+
+// --fail-under P: a CI job fails when the score is below P % of the maximum.
+void checkFailUnder(const grader::GradingReport& report, double percent) {
+    if (percent < 0) return;
+    double achieved = report.maxScore() > 0 ? 100.0 * report.score() / report.maxScore() : 0.0;
+    if (achieved + 1e-9 >= percent) return;
+    char message[160];
+    std::snprintf(message, sizeof message, "score %.2f of %.2f points (%.1f %%) is below --fail-under %g %%", report.score(),
+                  report.maxScore(), achieved, percent);
+    throw Error(message);
+}
+
+// The flags every grading child of a batch gets, so it grades exactly as this run would.
+std::vector<std::string> childGradeArguments(const grader::GradingOptions& g) {
+    std::vector<std::string> arguments = {"--root", g.sourceDir, "--models", g.modelsDir, "--seed", std::to_string(g.seed),
+                                          "--time-limit", std::to_string(g.limits.wallSeconds),
+                                          "--memory-limit", std::to_string(g.limits.memoryMiB),
+                                          "--compile-time-limit", std::to_string(g.compile.wallSeconds)};
+    if (!g.rubricPath.empty()) arguments.insert(arguments.end(), {"--rubric", g.rubricPath});
+    for (const std::string& a : g.assignments) arguments.insert(arguments.end(), {"--assignment", a});
+    return arguments;
+}
+
+void gradeFolderOfSubmissions(const GradeFlags& flags) {
+    const grader::GradingOptions& g = flags.grading;
+    grader::BatchOptions batch;
+    batch.submissionsDir = flags.submissions;
+    if (!flags.shard.empty()) batch.shard = grader::Shard::parse(flags.shard);
+    // A shard of a fan-out writes reports only, unless a CSV is named; `grade merge` joins them.
+    std::string csv = flags.csv.empty() ? "grades.csv" : flags.csv;
+    if (flags.csv.empty() && flags.shard.empty() && fs::exists(csv)) throw Error(csv + " exists; choose the output with --csv FILE");
+    if (!flags.csv.empty() || flags.shard.empty()) batch.csvPath = csv;
+    batch.reportsDir = flags.reports.empty() ? (fs::path(csv).parent_path() / (fs::path(csv).stem().string() + "-reports")).string()
+                                             : flags.reports;
+    batch.workDir = g.workDir;
+    batch.rubricPath = rubricPath(g);
+    batch.executable = fs::read_symlink("/proc/self/exe").string();
+    batch.gradeArguments = childGradeArguments(g);
+    batch.jobs = flags.jobs;
+    batch.force = flags.force;
+    batch.secondsPerSubmission = flags.secondsPerSubmission;
+    grader::BatchSummary summary = grader::gradeBatch(batch);
+    std::cout << "graded " << summary.graded << " submissions, " << summary.notGraded << " not graded (their rows say why), "
+              << summary.skipped << " skipped (already graded; --force grades them again); reports in " << batch.reportsDir;
+    if (!batch.csvPath.empty()) std::cout << ", CSV " << batch.csvPath;
+    std::cout << "\n";
+}
+
+void merge(const MergeFlags& flags) {
+    std::vector<std::string> reports = grader::reportsInFolders(flags.reportFolders);
+    if (reports.empty()) throw Error(flags.reportFolders.front() + ": no JSON reports to merge");
+    std::string rubric = flags.rubric.empty() ? std::string(RTLAB_GRADER_SOURCE_DIR) + "/grader/rubric.json" : flags.rubric;
+    grader::writeGradesCsv(reports, flags.csv, grader::Rubric::load(rubric).precision());
+    std::cout << "merged " << reports.size() << " reports into " << flags.csv << "\n";
+}
 
 void writeReports(const grader::GradingReport& report, const GradeFlags& flags) {
     if (!flags.quiet) grader::printTerminalReport(report, std::cout, isatty(STDOUT_FILENO));
@@ -64,20 +136,32 @@ void grade(GradeFlags& flags) {
         options.toolchainPath = (executableDir() / "grader" / "submission-toolchain.json").string();
         options.workDir = g.workDir;
         if (!flags.submissions.empty()) {
-            std::string csv = flags.csv.empty() ? "grades.csv" : flags.csv;
-            if (flags.csv.empty() && fs::exists(csv)) throw Error(csv + " exists; choose the output with --csv FILE");
-            std::string reports = (fs::path(csv).parent_path() / (fs::path(csv).stem().string() + "-reports")).string();
-            size_t n = grader::gradeSubmissions(flags.submissions, options, flags.jobs, csv, reports);
-            std::cout << "graded " << n << " submissions into " << csv << " (reports in " << reports << ")\n";
+            if (flags.failUnder >= 0) throw Error("--fail-under applies to one grading, not to --submissions");
+            gradeFolderOfSubmissions(flags);
             return;
         }
-        writeReports(grader::gradeSubmission(fs::absolute(flags.submission).string(), options), flags);
+        grader::GradingReport report = grader::gradeSubmission(fs::absolute(flags.submission).string(), options);
+        writeReports(report, flags);
+        checkFailUnder(report, flags.failUnder);
         return;
     }
-    g.implementation = flags.label.empty() ? executableDir().string() + "/" + fs::read_symlink("/proc/self/exe").filename().string() +
-                                                 " (the implementation it links)"
-                                           : flags.label;
-    writeReports(grader::gradeLinkedImplementation(g), flags);
+    if (g.workerPath.empty()) g.workerPath = (executableDir() / "rtlab-worker").string();
+    if (!fs::is_regular_file(g.workerPath)) throw Error("--worker " + g.workerPath + ": no such worker executable (make build builds it)");
+    g.implementation = flags.label.empty() ? g.workerPath + " (the implementation it links)" : flags.label;
+    grader::GradingReport report = grader::gradeWorker(g);
+    writeReports(report, flags);
+    checkFailUnder(report, flags.failUnder);
+}
+
+void addMergeCommand(CLI::App& grade) {
+    auto flags = std::make_shared<MergeFlags>();
+    CLI::App* cmd = grade.add_subcommand("merge", "Join per-student JSON reports (of a batch or of its shards) into one CSV");
+    cmd->add_option("REPORTS_DIR", flags->reportFolders, "Folders with the <submission>.json reports")
+        ->required()->check(CLI::ExistingDirectory);
+    cmd->add_option("--csv", flags->csv, "The CSV to write")->required();
+    cmd->add_option("--rubric", flags->rubric, "Rubric whose precision the numbers get (default grader/rubric.json)")
+        ->check(CLI::ExistingFile);
+    cmd->callback([flags] { merge(*flags); });
 }
 
 }  // namespace
@@ -96,9 +180,20 @@ void addGradeCommand(CLI::App& app) {
         ->check(CLI::ExistingDirectory);
     cmd->add_option("--submissions", flags->submissions, "Grade every subfolder of DIR into a CSV")->check(CLI::ExistingDirectory);
     cmd->add_option("--csv", flags->csv, "CSV file for --submissions (default grades.csv, never overwritten unless named)");
+    cmd->add_option("--reports", flags->reports, "Folder for the per-student JSON reports of --submissions (default: <csv>-reports)");
+    cmd->add_option("--shard", flags->shard, "With --submissions: grade only every N-th folder, starting at the K-th (K/N, by name)");
+    cmd->add_flag("--force", flags->force, "With --submissions: grade again the folders whose report exists");
+    cmd->add_option("--submission-time-limit", flags->secondsPerSubmission,
+                    "With --submissions: wall-clock seconds one submission's grading may take (then it is killed)")
+        ->capture_default_str()->check(CLI::Range(1.0, 86400.0));
+    cmd->add_option("--fail-under", flags->failUnder, "Exit non-zero when the score is below P percent of the maximum")
+        ->check(CLI::Range(0.0, 100.0));
     cmd->add_option("--jobs", flags->jobs, "Submissions graded in parallel")->capture_default_str()->check(CLI::Range(1, 64));
     cmd->add_option("--time-limit", flags->grading.limits.wallSeconds, "Wall-clock seconds per test phase")
         ->capture_default_str()->check(CLI::Range(0.1, 600.0));
+    cmd->add_option("--compile-time-limit", flags->grading.compile.wallSeconds,
+                    "Wall-clock seconds a submission's build may take (then the compiler is stopped)")
+        ->capture_default_str()->check(CLI::Range(1.0, 3600.0));
     cmd->add_option("--memory-limit", flags->grading.limits.memoryMiB, "MiB of memory student code may allocate")
         ->capture_default_str()->check(CLI::Range(16, 65536));
     cmd->add_option("--rubric", flags->grading.rubricPath, "Rubric file (default grader/rubric.json)")->check(CLI::ExistingFile);
@@ -106,11 +201,18 @@ void addGradeCommand(CLI::App& app) {
     cmd->add_option("--models", flags->grading.modelsDir, "Folder with bunny.gltf (default: models/ next to the executable)");
     cmd->add_option("--work", flags->grading.workDir, "Folder for renders and heat maps (default: a temporary folder)");
     cmd->add_option("--label", flags->label, "What is graded, as the reports name it");
+    cmd->add_option("--worker", flags->grading.workerPath,
+                    "The worker executable holding the code to grade (default: rtlab-worker next to rtlab-grader; "
+                    "rtlab grade and rtlab-solution grade name theirs)");
     cmd->add_flag("--write-reference", flags->grading.writeReference,
                   "Record SAH costs and work per ray into grader/reference/ (run with rtlab-solution)");
     cmd->add_flag("--quiet", flags->quiet, "No table and no progress on the terminal");
-    cmd->callback([flags] {
+    addMergeCommand(*cmd);
+    cmd->callback([flags, cmd] {
+        if (cmd->got_subcommand("merge")) return;  // CLI11 runs this after merge's own callback
         if (!flags->submission.empty() && !flags->submissions.empty()) throw Error("use either --submission or --submissions");
+        if (flags->submissions.empty() && (!flags->shard.empty() || flags->force || !flags->reports.empty()))
+            throw Error("--shard, --force and --reports go with --submissions");
         grade(*flags);
     });
 }
