@@ -6,13 +6,14 @@
 #   make test-sanitize                        the suite under AddressSanitizer + UBSan
 #   make bench                                benchmarks against Embree (docs/performance.md)
 #   make gradescope                           the Gradescope autograder zip
+#   make test-batch-engines                   a sharded batch through GNU parallel and a local Slurm
 
 MAKEFLAGS += --no-print-directory
 IMPL ?= assignments
 JOBS ?= $(shell nproc)
 RTLAB := build/$(if $(filter solutions,$(IMPL)),rtlab-solution,rtlab)
 
-.PHONY: deps build models grade test test-sanitize bench gradescope clean
+.PHONY: deps build models grade test test-sanitize test-batch-engines bench gradescope clean
 
 deps:
 	@scripts/install-deps
@@ -46,6 +47,11 @@ bench: deps
 
 gradescope: build
 	@scripts/make-gradescope build/gradescope.zip
+
+# docs/grading.md "Course scale": both fan-out recipes on three small submissions (about a
+# minute; starts and stops its own single-node Slurm, so it needs root).
+test-batch-engines: build
+	@timeout 900 tests/cli/batch_engines.sh build $(CURDIR)
 
 clean:
 	rm -rf build build-debug build-sanitize build-bench build-configure*.log
