@@ -6,6 +6,9 @@
 #   make test-sanitize                        the suite under AddressSanitizer + UBSan
 #   make bench                                benchmarks against Embree (docs/performance.md)
 #   make gradescope                           the Gradescope autograder zip
+#   make fuzz [FUZZ_SECONDS=60]               every libFuzzer target for that long (fuzz/README.md)
+#   make test-tsan                            renders, hit traces and the bench under ThreadSanitizer
+#   make validate-gltf                        gltf-validator on every glTF shipped or written
 #   make test-batch-engines                   a sharded batch through GNU parallel and a local Slurm
 
 MAKEFLAGS += --no-print-directory
@@ -13,7 +16,7 @@ IMPL ?= assignments
 JOBS ?= $(shell nproc)
 RTLAB := build/$(if $(filter solutions,$(IMPL)),rtlab-solution,rtlab)
 
-.PHONY: deps build models grade test test-sanitize test-batch-engines bench gradescope clean
+.PHONY: deps build models grade test test-sanitize test-batch-engines bench gradescope clean fuzz fuzz-ci test-tsan validate-gltf
 
 deps:
 	@scripts/install-deps
@@ -48,10 +51,27 @@ bench: deps
 gradescope: build
 	@scripts/make-gradescope build/gradescope.zip
 
+# The parsers of outside input under libFuzzer (clang, build-fuzz/); fuzz-ci is CI's short run.
+FUZZ_SECONDS ?= 60
+fuzz: deps
+	@JOBS=$(JOBS) fuzz/run-fuzzers $(FUZZ_SECONDS)
+
+fuzz-ci: deps
+	@JOBS=$(JOBS) fuzz/run-fuzzers 20
+
+# Its own build (preset tsan, build-tsan/): only the executables scripts/run-tsan runs.
+test-tsan: deps
+	@cmake --preset tsan > build-configure-tsan.log || (cat build-configure-tsan.log; exit 1)
+	@cmake --build --preset tsan -j $(JOBS) --target rtlab-solution rtlab-solution-bench
+	@scripts/run-tsan build-tsan
+
+validate-gltf: build models
+	@scripts/validate-gltf-all build
+
 # docs/grading.md "Course scale": both fan-out recipes on three small submissions (about a
 # minute; starts and stops its own single-node Slurm, so it needs root).
 test-batch-engines: build
 	@timeout 900 tests/cli/batch_engines.sh build $(CURDIR)
 
 clean:
-	rm -rf build build-debug build-sanitize build-bench build-configure*.log
+	rm -rf build build-debug build-sanitize build-bench build-fuzz build-tsan build-configure*.log
