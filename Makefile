@@ -28,7 +28,12 @@ build: deps
 models: build
 	@scripts/fetch-models build/models
 
-grade: build models
+# Only what grading needs: the command, the grader and the worker with the code to grade.
+GRADE_TARGETS := $(notdir $(RTLAB)) rtlab-grader $(if $(filter solutions,$(IMPL)),rtlab-worker-solution,rtlab-worker)
+grade: deps
+	@cmake --preset release > build-configure.log || (cat build-configure.log; exit 1)
+	@scripts/quiet-build build/grade-build.log cmake --build --preset release -j $(JOBS) --target $(GRADE_TARGETS)
+	@scripts/fetch-models build/models
 	@$(RTLAB) grade
 
 test: build models
