@@ -18,6 +18,7 @@
 #include <poll.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <thread>
 #include <time.h>
@@ -59,7 +60,7 @@ std::optional<double> processCpuSeconds(pid_t pid) {
 
 // What runs in the forked child before the worker image replaces it: only grader code, and
 // only async-signal-safe steps after the filter is built. Never returns.
-[[noreturn]] void startWorker(const WorkerSpec& spec, int requestFd, int resultFd, int outputFd, uint64_t addressSpace) {
+[[noreturn]] void startWorker(const WorkerSpec& spec, int requestFd, int resultFd, int outputFd, uint64_t addressSpace, pid_t grader) {
     int filterFd = -1;
     try {
         filterFd = exportSystemCallFilter(worker::kResultFd, getpid());
@@ -72,6 +73,10 @@ std::optional<double> processCpuSeconds(pid_t pid) {
     for (int i = 0; i < 5; ++i)
         if (moved[i] < 0 || dup2(moved[i], i) != i) _exit(worker::kExitSandboxFailed);
     close_range(5, ~0u, 0);
+    // Opened while still the grader's user, so the worker runs wherever the build lives (a
+    // folder nobody may not enter, say); executing it by descriptor checks only the file.
+    int executable = open(spec.path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (executable < 0) _exit(worker::kExitSandboxFailed);
 
     rlimit memory{addressSpace, addressSpace};
     rlimit cpu{static_cast<rlim_t>(spec.limits.cpuSeconds), static_cast<rlim_t>(spec.limits.cpuSeconds + 1)};
@@ -84,11 +89,12 @@ std::optional<double> processCpuSeconds(pid_t pid) {
     if (geteuid() == 0 && (setgroups(0, nullptr) != 0 || setgid(kNobody) != 0 || setuid(kNobody) != 0))
         _exit(worker::kExitSandboxFailed);
     prctl(PR_SET_PDEATHSIG, SIGKILL);  // after setuid, which clears it
-    if (getppid() == 1) _exit(worker::kExitSandboxFailed);
+    if (getppid() != grader) _exit(worker::kExitSandboxFailed);  // the grader died before that
     char name[] = "rtlab-worker";
     char* argv[] = {name, nullptr};
     char* envp[] = {nullptr};
-    execve(spec.path.c_str(), argv, envp);
+    char empty[] = "";
+    syscall(SYS_execveat, executable, empty, argv, envp, AT_EMPTY_PATH);
     _exit(worker::kExitSandboxFailed);
 }
 
@@ -109,9 +115,10 @@ public:
         uint64_t addressSpace = (kWorkerBaseMiB + uint64_t(spec_.limits.memoryMiB)) << 20;
         for (size_t k : order_) addressSpace += 2 * phases_[k].input.size();
         std::fflush(nullptr);
+        pid_t grader = getpid();
         pid_t pid = fork();
         if (pid < 0) throw Error(std::string("grader: cannot fork: ") + std::strerror(errno));
-        if (pid == 0) startWorker(spec_, requestPipe[0], resultPipe[1], outputPipe[1], addressSpace);
+        if (pid == 0) startWorker(spec_, requestPipe[0], resultPipe[1], outputPipe[1], addressSpace, grader);
         close(requestPipe[0]);
         close(resultPipe[1]);
         close(outputPipe[1]);

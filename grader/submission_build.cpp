@@ -108,9 +108,12 @@ SubmissionBuild buildSubmission(const std::string& submissionDir, const std::str
 
     SubmissionBuild build;
     build.isolation = sandbox.description();
+    // The runtime is copied, so the compiler needs nothing of the build tree (whose folders an
+    // unprivileged user may not be able to enter).
     CompileInputs host{(fs::path(workDir) / "src").string(), (fs::path(workDir) / "include").string(),
-                       toolchain.at("worker_runtime").get<std::string>(), (fs::path(workDir) / "out").string()};
+                       (fs::path(workDir) / "worker-runtime.o").string(), (fs::path(workDir) / "out").string()};
     fs::create_directories(host.output);
+    fs::copy_file(toolchain.at("worker_runtime").get<std::string>(), host.runtimeObject, fs::copy_options::overwrite_existing);
     auto stubs = pristineStubs(sourceDir);
     build.fromSubmission = mergeSources(submissionDir, stubs, host.sources);
     copyStudentHeaders(sourceDir, host.headers);
