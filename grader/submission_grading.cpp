@@ -38,12 +38,16 @@ GradingReport gradeSubmission(const std::string& submissionDir, const Submission
     fs::create_directories(options.workDir);
     TestResult buildTest = makeResult("build", "build");
     SubmissionBuild build;
+    std::string unreadable;
     try {
         build = buildSubmission(submissionDir, g.sourceDir, options.toolchainPath, options.workDir + "/build", g.compile);
     } catch (const Error& e) {
-        build.log = e.what();
+        unreadable = e.what();
     }
-    if (build.succeeded) {
+    if (!unreadable.empty()) {
+        g.unavailableWorker = "not graded: the submission cannot be read (see the build test)";
+        buildTest.reason = "the submission cannot be read: " + unreadable;
+    } else if (build.succeeded) {
         g.workerPath = build.executable;
         buildTest.status = TestStatus::Passed;
         buildTest.fraction = 1.0;
