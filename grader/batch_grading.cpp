@@ -91,12 +91,11 @@ std::vector<TestResult> definedTests(const BatchOptions& options) {
 // reported; a submission whose grading failed gets every test failed, with the reason.
 GradingReport submissionRow(const std::string& folder, const ChildOutcome& child, const std::vector<TestResult>& defined,
                             const Rubric& rubric) {
-    GradingReport row;
+    // Everything else the child reported (seed, student output, the isolation in force) stays.
+    GradingReport row = child.graded ? child.report : GradingReport{};
     row.implementation = "submission " + folder;
     row.seconds = child.seconds;
     if (child.graded) {
-        row.seed = child.report.seed;
-        row.studentOutput = child.report.studentOutput;
         row.tests = rubric.applyToDefined(defined, child.report.tests);
         return row;
     }
