@@ -1,7 +1,9 @@
 // Byte-safe reports (docs/grading.md, "Reports"): every hostile byte class student code or a
 // compiler can emit goes through every report writer; each output stays valid for its format
 // (JSON parses, JUnit XML passes xmllint against grader/schemas/junit-10.xsd, HTML is valid
-// UTF-8, no raw ESC reaches the terminal) and no score changes.
+// UTF-8, no raw ESC reaches the terminal, the grades CSV merged from the JSON report is valid
+// UTF-8 with the submission's hostile folder name escaped) and no score changes.
+#include "grader/grades_csv.h"
 #include "grader/grading_report.h"
 #include "grader/rubric.h"
 #include "grader/untrusted_text.h"
@@ -143,6 +145,17 @@ TEST_CASE("every report writer: hostile bytes are escaped, outputs stay valid, s
                               "' > '" + (work / "xmllint.log").string() + "' 2>&1";
         CHECK_MESSAGE(std::system(xmllint.c_str()) == 0, readFile(work / "xmllint.log"));
         CHECK(readFile(junit).find(hostile.visible) != std::string::npos);
+
+        // The folder name is the report's file name: anything but '/' and NUL may be in it.
+        if (hostile.bytes.find('\0') == std::string::npos) {
+            fs::path named = work / ("student " + hostile.bytes + ".json"), csv = work / "grades.csv";
+            fs::copy_file(json, named, fs::copy_options::overwrite_existing);
+            REQUIRE_NOTHROW(writeGradesCsv({named.string()}, csv.string(), rubric.precision()));
+            std::string sheet = readFile(csv);
+            CHECK(validUtf8WithoutControls(sheet.substr(0, sheet.size() - 1), false));
+            CHECK(sheet.find("\"student " + escapeUntrusted(hostile.bytes, TextLayout::OneLine) + "\",15.00,20.00,") != std::string::npos);
+            fs::remove(named);
+        }
 
         std::string page = readFile(html / "index.html");
         CHECK(validUtf8WithoutControls(page, false));
