@@ -3,6 +3,7 @@
 // problem.
 #include "framework/core/error.h"
 #include "framework/pov/reference_manifest.h"
+#include "framework/scene/gltf_loader.h"
 #include "grader/rubric.h"
 
 #include <doctest/doctest.h>
@@ -34,6 +35,7 @@ void checkRejected(const std::function<void(const std::string&)>& parse, const s
 
 void loadRubric(const std::string& path) { rtlab::grader::Rubric::load(path); }
 void loadManifest(const std::string& path) { rtlab::ReferenceManifest::load(path); }
+void loadScene(const std::string& path) { rtlab::loadGltf(path); }
 
 }  // namespace
 
@@ -46,4 +48,9 @@ TEST_CASE("fuzz findings: the reference manifest parser") {
     checkRejected(loadManifest, "manifest-format-1e300.json", "manifest format must be a whole number from 0 to 2147483647");
     checkRejected(loadManifest, "manifest-width-1e10.json", R"(reference "a\nb": width must be a whole number)");
     checkRejected(loadManifest, "manifest-width-wraps-to-1.json", R"(reference "a": width must be a whole number)");
+}
+
+TEST_CASE("fuzz findings: the glTF loader") {
+    // Its header declares 0 bytes: the chunk checks subtracted from that and read past the file.
+    checkRejected(loadScene, "glb-length-below-header.glb", "GLB header declares 0 bytes, the file has 87");
 }

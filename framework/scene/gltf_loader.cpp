@@ -138,8 +138,9 @@ std::optional<GlbChunks> splitGlb(std::span<const unsigned char> bytes, std::str
         *problem = "GLB version " + std::to_string(readLittleEndian32(bytes, 4)) + " is not supported (2 only)";
         return std::nullopt;
     }
+    // Every size below is subtracted from this one, so it must cover at least the headers.
     uint64_t declared = readLittleEndian32(bytes, 8);
-    if (declared > bytes.size()) {
+    if (declared > bytes.size() || declared < kHeaderBytes + kChunkHeaderBytes) {
         *problem = "GLB header declares " + std::to_string(declared) + " bytes, the file has " +
                    std::to_string(bytes.size());
         return std::nullopt;
