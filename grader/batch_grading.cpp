@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <mutex>
 #include <sstream>
@@ -116,6 +117,42 @@ void writeReportAtomically(const GradingReport& report, const std::string& path)
     fs::rename(partial, path);
 }
 
+std::string reportPath(const BatchOptions& options, const std::string& folder) {
+    return (fs::path(options.reportsDir) / (fs::path(folder).filename().string() + ".json")).string();
+}
+
+// A folder whose grading could not even be set up (its work folder cannot be made, say) still
+// gets its row.
+ChildOutcome gradeFolder(const BatchOptions& options, const std::string& folder) {
+    try {
+        return runGradingChild(options, folder, fs::path(options.workDir) / "submissions" / fs::path(folder).filename());
+    } catch (const std::exception& e) {
+        ChildOutcome failed;
+        failed.reason = std::string("its grading could not be started: ") + e.what();
+        return failed;
+    }
+}
+
+// Runs task(0..count-1) on `jobs` threads; the first exception a task throws is rethrown once
+// all threads have ended.
+void forEachInParallel(size_t count, int jobs, const std::function<void(size_t)>& task) {
+    std::atomic<size_t> next{0};
+    std::mutex mutex;
+    std::exception_ptr failure;
+    auto drain = [&] {
+        for (size_t i; (i = next++) < count;) try {
+                task(i);
+            } catch (...) {
+                std::lock_guard lock(mutex);
+                if (!failure) failure = std::current_exception();
+            }
+    };
+    std::vector<std::thread> threads;
+    for (int j = 0; j < std::max(1, jobs); ++j) threads.emplace_back(drain);
+    for (std::thread& t : threads) t.join();
+    if (failure) std::rethrow_exception(failure);
+}
+
 std::string progressLine(const std::string& name, const GradingReport& row, const ChildOutcome& child) {
     char buffer[96];
     std::snprintf(buffer, sizeof buffer, ": %.2f of %.2f points, %.0f s", row.score(), row.maxScore(), child.seconds);
@@ -163,7 +200,7 @@ BatchSummary gradeBatch(const BatchOptions& options) {
     BatchSummary summary;
     for (size_t i = 0; i < folders.size(); ++i) {
         if (!options.shard.holds(i)) continue;
-        std::string report = (fs::path(options.reportsDir) / (fs::path(folders[i]).filename().string() + ".json")).string();
+        std::string report = reportPath(options, folders[i]);
         summary.reportPaths.push_back(report);
         if (!options.force && fs::exists(report)) {
             ++summary.skipped;
@@ -175,29 +212,16 @@ BatchSummary gradeBatch(const BatchOptions& options) {
     if (!todo.empty()) {
         Rubric rubric = Rubric::load(options.rubricPath);
         std::vector<TestResult> defined = definedTests(options);
-        std::atomic<size_t> next{0};
-        std::mutex mutex;
-        std::exception_ptr failure;
-        auto work = [&] {
-            for (size_t i; (i = next++) < todo.size();) {
-                std::string name = fs::path(todo[i]).filename().string();
-                try {
-                    ChildOutcome child = runGradingChild(options, todo[i], fs::path(options.workDir) / "submissions" / name);
-                    GradingReport row = submissionRow(todo[i], child, defined, rubric);
-                    writeReportAtomically(row, (fs::path(options.reportsDir) / (name + ".json")).string());
-                    std::lock_guard lock(mutex);
-                    ++(child.graded ? summary.graded : summary.notGraded);
-                    std::cerr << progressLine(name, row, child) << "\n";
-                } catch (const std::exception&) {
-                    std::lock_guard lock(mutex);
-                    if (!failure) failure = std::current_exception();
-                }
-            }
-        };
-        std::vector<std::thread> threads;
-        for (int j = 0; j < std::max(1, options.jobs); ++j) threads.emplace_back(work);
-        for (std::thread& t : threads) t.join();
-        if (failure) std::rethrow_exception(failure);
+        std::mutex printing;
+        forEachInParallel(todo.size(), options.jobs, [&](size_t i) {
+            std::string name = fs::path(todo[i]).filename().string();
+            ChildOutcome child = gradeFolder(options, todo[i]);
+            GradingReport row = submissionRow(todo[i], child, defined, rubric);
+            writeReportAtomically(row, reportPath(options, todo[i]));
+            std::lock_guard lock(printing);
+            ++(child.graded ? summary.graded : summary.notGraded);
+            std::cerr << progressLine(name, row, child) << "\n";
+        });
     }
     if (!options.csvPath.empty()) writeGradesCsv(summary.reportPaths, options.csvPath, Rubric::load(options.rubricPath).precision());
     return summary;
