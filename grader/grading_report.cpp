@@ -2,19 +2,26 @@
 
 #include "grader/untrusted_text.h"
 
+#include <cmath>
+
 namespace rtlab::grader {
 
-double GradingReport::score() const {
+namespace {
+
+// Test scores have at most 6 decimals (the rubric's precision is 0..6), so their exact sum has
+// at most 6 too: rounding there removes only the binary floating-point noise of the additions
+// (0.1 + 0.2), and a total of 300 reads 300 in JSON, not 300.00000000000006.
+double decimalSum(const std::vector<TestResult>& tests, double TestResult::*field) {
     double sum = 0.0;
-    for (const TestResult& t : tests) sum += t.score;
-    return sum;
+    for (const TestResult& t : tests) sum += t.*field;
+    return std::round(sum * 1e6) / 1e6;
 }
 
-double GradingReport::maxScore() const {
-    double sum = 0.0;
-    for (const TestResult& t : tests) sum += t.maxScore;
-    return sum;
-}
+}  // namespace
+
+double GradingReport::score() const { return decimalSum(tests, &TestResult::score); }
+
+double GradingReport::maxScore() const { return decimalSum(tests, &TestResult::maxScore); }
 
 std::string testOutput(const TestResult& test) {
     std::string text = test.reason;

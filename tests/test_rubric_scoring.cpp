@@ -1,6 +1,7 @@
 // The rubric's scoring rules (docs/grading.md, "The rubric"): scores rounded to its precision,
 // and only the tests the grader defines earn points.
 #include "framework/core/error.h"
+#include "grader/grading_report.h"
 #include "grader/rubric.h"
 
 #include <doctest/doctest.h>
@@ -46,6 +47,20 @@ TEST_CASE("rubric: scores are rounded to its precision") {
     CHECK(results[0].score == 0.67);
     CHECK(rubric.round(1.005001) == 1.01);
     fs::remove(one);
+}
+
+TEST_CASE("report totals are the decimal sums of the rounded scores") {
+    GradingReport report;
+    double plain = 0.0;
+    for (double score : {0.1, 0.2, 0.3}) {
+        TestResult t;
+        t.score = t.maxScore = score;
+        report.tests.push_back(t);
+        plain += score;
+    }
+    REQUIRE(plain != 0.6);  // 0.6000000000000001
+    CHECK(report.score() == 0.6);
+    CHECK(report.maxScore() == 0.6);
 }
 
 TEST_CASE("rubric: a malformed precision is an error naming the file") {
