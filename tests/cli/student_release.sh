@@ -60,8 +60,9 @@ import json, sys
 release, tree = (json.load(open(p)) for p in sys.argv[1:])
 tests = release["tests"]
 assert tests, "the release grades no tests"
-started = [t["name"] for t in tests if t["status"] != "not started" or t["score"] != 0]
-assert not started, "tests not 'not started' with 0 points: " + ", ".join(started[:5])
+started = [f'{t["name"]} ({t["status"]}, {t["score"]} points: {t["reason"][:120]})' for t in tests
+           if t["status"] != "not started" or t["score"] != 0]
+assert not started, "tests not 'not started' with 0 points:\n" + "\n".join(started[:5])
 assert release["score"] == 0 and release["max_score"] > 0, (release["score"], release["max_score"])
 names = sorted(t["name"] for t in tests)
 assert names == sorted(t["name"] for t in tree["tests"]), "the release grades other tests than the source tree"
