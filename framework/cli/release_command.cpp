@@ -6,14 +6,9 @@
 #include "framework/cli/commands.h"
 #include "framework/core/error.h"
 #include "framework/pov/povray_process.h"
+#include "grader/process_runner.h"
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-
-#include <cerrno>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -40,48 +35,29 @@ constexpr LeftOut kLeftOut[] = {
     {".ci", "CI of the full repository, which runs all of the above"},
 };
 
+// Absolute paths, as runProcess wants them: Debian's.
+constexpr const char* kGit = "/usr/bin/git";
+constexpr const char* kTar = "/usr/bin/tar";
+
 struct ReleaseFlags {
     std::string dir;
     std::string repository = RTLAB_REPOSITORY_DIR;
 };
 
-std::string firstLine(const fs::path& file) {
-    std::ifstream in(file);
-    std::string line;
-    std::getline(in, line);
+// Runs a program with stdin closed, this process's environment (git needs HOME for the user's
+// identity) and a generous wall-clock cap; returns the first line it printed, and throws
+// rtlab::Error naming `what` and that line when it fails.
+std::string run(const std::vector<std::string>& command, const std::string& what) {
+    std::vector<std::string> environment;
+    for (char** variable = environ; *variable; ++variable) environment.emplace_back(*variable);
+    grader::ProcessLimits limits;
+    limits.wallSeconds = 600;
+    limits.cpuSeconds = 600;
+    grader::ProcessResult result = grader::runProcess(command, environment, limits);
+    std::string line = result.output.substr(0, result.output.find('\n'));
+    if (!result.succeeded())
+        throw Error("release: " + what + " failed" + (line.empty() ? ": " + result.failure : ": " + line));
     return line;
-}
-
-// Runs program with stdin closed, stdout into `out` and stderr into `err`; throws rtlab::Error
-// naming `what` and the program's first error line when it fails.
-void run(const std::vector<std::string>& command, const fs::path& out, const fs::path& err, const std::string& what) {
-    std::vector<std::string> args = command;
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    // posix_spawn rather than fork: safe in a multi-threaded process.
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_addopen(&actions, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    pid_t pid = 0;
-    int spawnError = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (spawnError != 0) throw Error("release: cannot run " + command[0] + " (is it installed?)");
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-        std::string line = firstLine(err);
-        throw Error("release: " + what + " failed" + (line.empty() ? "" : ": " + line));
-    }
-}
-
-// Runs command in scratch and returns the first line it printed.
-std::string outputOf(const std::vector<std::string>& command, const TemporaryDirectory& scratch, const std::string& what) {
-    run(command, scratch.path() / "stdout", scratch.path() / "stderr", what);
-    return firstLine(scratch.path() / "stdout");
 }
 
 // Removes a release that failed half-way, so the folder is as the user left it: absent or empty.
@@ -109,12 +85,11 @@ void release(const ReleaseFlags& flags) {
         throw Error("release: " + dir.string() + (error ? " cannot be read: " + error.message() : " is not empty") +
                     "; choose a new or empty folder");
     TemporaryDirectory scratch("rtlab-release");
-    fs::path out = scratch.path() / "stdout", err = scratch.path() / "stderr";
     std::string repository = fs::weakly_canonical(fs::absolute(flags.repository)).string();
     std::string commit, top;
     try {
-        top = outputOf({"git", "-C", repository, "rev-parse", "--show-toplevel"}, scratch, "");
-        commit = outputOf({"git", "-C", repository, "rev-parse", "--verify", "HEAD^{commit}"}, scratch, "");
+        top = run({kGit, "-C", repository, "rev-parse", "--show-toplevel"}, "git rev-parse");
+        commit = run({kGit, "-C", repository, "rev-parse", "--verify", "HEAD^{commit}"}, "git rev-parse");
     } catch (const Error&) {
         throw Error("release: " + repository + " is not a git repository with a commit (see --from)");
     }
@@ -127,26 +102,26 @@ void release(const ReleaseFlags& flags) {
     RemoveUnlessDone cleanup{dir, existed};
 
     fs::path tarball = scratch.path() / "release.tar";
-    std::vector<std::string> archive{"git", "-C", repository, "archive", "--format=tar", "--output=" + tarball.string(),
+    std::vector<std::string> archive{kGit, "-C", repository, "archive", "--format=tar", "--output=" + tarball.string(),
                                      commit, "--", "."};
     for (const LeftOut& left : kLeftOut) archive.push_back(std::string(":(exclude)") + left.path);
-    run(archive, out, err, "git archive of " + repository);
-    run({"tar", "-xf", tarball.string(), "-C", dir.string()}, out, err, "unpacking the archive into " + dir.string());
+    run(archive, "git archive of " + repository);
+    run({kTar, "-xf", tarball.string(), "-C", dir.string()}, "unpacking the archive into " + dir.string());
 
     std::string d = dir.string();
-    run({"git", "init", "--quiet", "--initial-branch=main", d}, out, err, "git init in " + d);
-    run({"git", "-C", d, "add", "--all"}, out, err, "git add in " + d);
+    run({kGit, "init", "--quiet", "--initial-branch=main", d}, "git init in " + d);
+    run({kGit, "-C", d, "add", "--all"}, "git add in " + d);
     // The user's identity if git has one, else a neutral one, so the commit never fails for
     // want of a name.
-    std::vector<std::string> commitCommand{"git", "-C", d};
+    std::vector<std::string> commitCommand{kGit, "-C", d};
     try {
-        outputOf({"git", "-C", d, "config", "user.email"}, scratch, "");
+        run({kGit, "-C", d, "config", "user.email"}, "git config");
     } catch (const Error&) {
         commitCommand.insert(commitCommand.end(), {"-c", "user.name=rtlab release", "-c", "user.email=rtlab@localhost"});
     }
     std::string shortCommit = commit.substr(0, 12);
     commitCommand.insert(commitCommand.end(), {"commit", "--quiet", "-m", "Student release of rtlab (from " + shortCommit + ")"});
-    run(commitCommand, out, err, "git commit in " + d);
+    run(commitCommand, "git commit in " + d);
     cleanup.done = true;
 
     size_t files = 0;
