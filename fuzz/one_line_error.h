@@ -13,7 +13,7 @@ namespace rtlab::fuzz {
 
 inline void checkOneLineError(const Error& error, const std::string& path) {
     std::string message = error.what();
-    if (message.rfind(path, 0) != 0 || message.find('\n') != std::string::npos) {
+    if (message.rfind(path, 0) != 0 || message.find_first_of("\r\n") != std::string::npos) {
         std::fprintf(stderr, "rejected with a malformed error message: [%s]\n", message.c_str());
         std::abort();
     }

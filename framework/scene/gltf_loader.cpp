@@ -64,8 +64,8 @@ bool skipImageDecoding(tinygltf::Image*, const int, std::string*, std::string*, 
 // tinygltf's messages may quote a whole data URI: keep the first line, and only its start.
 std::string firstLine(const std::string& text) {
     constexpr size_t kMaxLength = 200;
-    std::string line = text.substr(0, text.find('\n'));
-    while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+    std::string line = text.substr(0, text.find_first_of("\r\n"));
+    while (!line.empty() && line.back() == ' ') line.pop_back();
     if (line.size() > kMaxLength) line = line.substr(0, kMaxLength) + "...";
     return line;
 }
