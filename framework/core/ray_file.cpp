@@ -27,7 +27,7 @@ std::vector<Ray> readRayFile(const std::string& path) {
     if (!in) throw Error(path + ": cannot open the ray file");
     std::vector<Ray> rays;
     std::string line;
-    for (int lineNumber = 1; std::getline(in, line); ++lineNumber) {
+    for (size_t lineNumber = 1; std::getline(in, line); ++lineNumber) {  // a huge file must not overflow it
         line = line.substr(0, line.find('#'));
         std::istringstream tokens(line);
         std::vector<float> numbers;
