@@ -104,7 +104,20 @@ TEST_CASE("glTF limits: a buffer uri naming a FIFO, whose read would block forev
     std::string path = (directory / "fifo-buffer.gltf").string();
     std::ofstream(path) << R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "pipe.bin", "byteLength": 12}]})";
     std::string message = loadError(path);
-    CHECK(contains(message, "pipe.bin: not a regular file"));
+    CHECK(contains(message, "pipe.bin : not a regular file"));
+}
+
+TEST_CASE("glTF limits: a buffer naming a file of 2 GiB") {
+    std::filesystem::path directory = std::filesystem::path(RTLAB_BINARY_DIR) / "tests" / "gltf-limits-large";
+    std::filesystem::remove_all(directory);
+    std::filesystem::create_directories(directory);
+    std::ofstream(directory / "large.bin").close();
+    std::filesystem::resize_file(directory / "large.bin", uintmax_t{2} << 30);  // sparse: no disk used
+    std::string path = (directory / "large-buffer.gltf").string();
+    std::ofstream(path) << R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "large.bin", "byteLength": 12}]})";
+    std::string message = loadError(path);
+    CHECK(contains(message, "large.bin : beyond the loader's limit of 1024 MiB for a scene and the files it names"));
+    std::filesystem::remove_all(directory);
 }
 
 TEST_CASE("glTF limits: the files within them still load") {

@@ -63,7 +63,7 @@ bool skipImageDecoding(tinygltf::Image*, const int, std::string*, std::string*, 
 
 // tinygltf's messages may quote a whole data URI: keep the first line, and only its start.
 std::string firstLine(const std::string& text) {
-    constexpr size_t kMaxLength = 200;
+    constexpr size_t kMaxLength = 400;
     std::string line = text.substr(0, text.find_first_of("\r\n"));
     while (!line.empty() && line.back() == ' ') line.pop_back();
     if (line.size() > kMaxLength) line = line.substr(0, kMaxLength) + "...";
@@ -79,18 +79,19 @@ uint32_t readLittleEndian32(std::span<const unsigned char> bytes, size_t offset)
            uint32_t{bytes[offset + 3]} << 24;
 }
 
-// The whole file, refused beyond kMaxFileBytes or when it is not a regular file (a FIFO or a
+// The whole file, refused beyond `limit` bytes or when it is not a regular file (a FIFO or a
 // device named by a hostile uri would block or never end).
-bool readWholeFile(const std::string& path, std::vector<unsigned char>* out, std::string* problem) {
+bool readWholeFile(const std::string& path, uint64_t limit, std::vector<unsigned char>* out, std::string* problem) {
     std::error_code error;
     if (!std::filesystem::is_regular_file(path, error)) {
         *problem = "not a regular file";
         return false;
     }
     uintmax_t size = std::filesystem::file_size(path, error);
-    if (error || size > kMaxFileBytes) {
-        *problem = error ? "cannot read its size" : "larger than the loader's limit of " +
-                                                        std::to_string(kMaxFileBytes >> 20) + " MiB";
+    if (error || size > limit) {
+        *problem = error ? "cannot read its size"
+                         : "beyond the loader's limit of " + std::to_string(kMaxFileBytes >> 20) +
+                               " MiB for a scene and the files it names";
         return false;
     }
     std::ifstream in(path, std::ios::binary);
@@ -112,11 +113,17 @@ bool referencedFileExists(const std::string& path, void*) {
     return std::filesystem::exists(path, error);
 }
 
-// tinygltf's reader of the files a document names (buffers, images), with readWholeFile's limits.
-bool readReferencedFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+// tinygltf's reader of the files a document names (buffers, and images, which it reads even
+// though rtlab never decodes them). `budget` is what is left of kMaxFileBytes: a document that
+// names one large file a hundred times is refused, not read a hundred times.
+bool readReferencedFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* budget) {
+    uint64_t& remaining = *static_cast<uint64_t*>(budget);
     std::string problem;
-    if (readWholeFile(path, out, &problem)) return true;
-    if (err) *err += path + ": " + problem + "\n";
+    if (readWholeFile(path, remaining, out, &problem)) {
+        remaining -= out->size();
+        return true;
+    }
+    if (err) *err += problem + "\n";  // tinygltf puts "File read error : PATH : " in front
     return false;
 }
 
@@ -713,14 +720,15 @@ Scene loadGltf(const std::string& path) {
     std::string problem;
     std::error_code missing;
     if (!std::filesystem::exists(path, missing)) throw Error(path + ": cannot open the file");
-    if (!readWholeFile(path, &bytes, &problem)) throw Error(path + ": " + problem);
+    if (!readWholeFile(path, kMaxFileBytes, &bytes, &problem)) throw Error(path + ": " + problem);
     bool binary = startsWithGlbMagic(bytes);
     checkDocumentLimits(path, bytes, binary);
 
     tinygltf::TinyGLTF parser;
     parser.SetImageLoader(skipImageDecoding, nullptr);
+    uint64_t budget = kMaxFileBytes - bytes.size();
     parser.SetFsCallbacks({&referencedFileExists, &tinygltf::ExpandFilePath, &readReferencedFile,
-                           &tinygltf::WriteWholeFile, nullptr});
+                           &tinygltf::WriteWholeFile, &budget});
     tinygltf::Model model;
     std::string error, warning;
     std::string baseDirectory = std::filesystem::path(path).parent_path().string();
