@@ -46,7 +46,8 @@ test-sanitize: deps
 	@ctest --preset sanitize -j $(JOBS) -L sanitize
 
 # Its own build (preset bench: -march=native, as the anchors' harness compiled its peers), so
-# the figures compare with reference/performance-anchors.md; the student build stays portable.
+# the figures compare with the anchors (docs/performance.md#what-is-measured); the student
+# build stays portable.
 bench: deps
 	@cmake --preset bench > build-configure-bench.log || (cat build-configure-bench.log; exit 1)
 	@cmake --build --preset bench -j $(JOBS) --target rtlab-solution rtlab-solution-bench

@@ -1,4 +1,4 @@
-// The benchmark scenes by name (reference/performance-anchors.md §3.1): bunny and engine from
+// The benchmark scenes by name (docs/performance.md#scene-definitions): bunny and engine from
 // the models scripts/fetch-models prepares, sphereflake and randsoup generated; any other
 // argument is read as a glTF path.
 #pragma once

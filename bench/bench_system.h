@@ -1,6 +1,6 @@
 // A system under test: something that builds over a scene's triangles and answers closest-hit
 // queries one ray at a time. rtlab's accelerators and Embree are the two kinds
-// (reference/performance-anchors.md §3.3).
+// (docs/performance.md#embree-setup-and-mismatches).
 #pragma once
 
 #include "framework/accel/traversal_stats.h"

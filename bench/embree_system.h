@@ -1,6 +1,7 @@
 // Embree 3 (Debian's libembree-dev) as the peer, set up exactly as in
-// reference/performance-anchors.md §3.3: one triangle geometry with shared float3 vertex and
-// uint3 index buffers, scene and geometry build quality MEDIUM or HIGH, rtcIntersect1 per ray.
+// docs/performance.md#embree-setup-and-mismatches: one triangle geometry with shared float3
+// vertex and uint3 index buffers, scene and geometry build quality MEDIUM or HIGH,
+// rtcIntersect1 per ray.
 #pragma once
 
 #include "bench/bench_system.h"

@@ -1,6 +1,6 @@
 // rtlab-bench / rtlab-solution-bench (docs/performance.md): rtlab's accelerators side by side
-// with Embree on the scenes, rays and timing protocol of reference/performance-anchors.md, and
-// run time against error. `rtlab bench` and `rtlab-solution bench` run these executables; they
+// with Embree on the scenes, rays and timing protocol of docs/performance.md#what-is-measured,
+// and run time against error. `rtlab bench` and `rtlab-solution bench` run these executables; they
 // are separate so that only they link Embree.
 #include "bench/bench_scenes.h"
 #include "bench/convergence.h"

@@ -21,7 +21,7 @@ struct ReferenceHits {
     double sumT;  // printed with 6 significant digits on the reference page
 };
 
-// performance-anchors.md §3.2, "Reference hit counts / Σt over hits (Embree 3.13.5 MEDIUM)".
+// The Embree 3.13.5 MEDIUM hit counts and sums of t over hits of docs/performance.md#ray-sets.
 const std::map<std::string, std::pair<ReferenceHits, ReferenceHits>> kReference{
     {"bunny", {{393'183, 5.65467e6}, {459'705, 1.00801e6}}},
     {"engine", {{346'882, 2.55167e8}, {659'681, 2.6182e7}}},
@@ -29,9 +29,11 @@ const std::map<std::string, std::pair<ReferenceHits, ReferenceHits>> kReference{
     {"randsoup", {{785'116, 1.10925e6}, {973'256, 29'825.5}}},
 };
 
-// "Our implementation should match these within a handful of rays."
+// A correct implementation matches these within a handful of rays
+// (docs/performance.md#agreement-with-the-reference-page).
 constexpr uint64_t kHitTolerance = 5;
-// §3.5 / §9: 0 to ~20 mismatches per 2^20 rays between correct systems.
+// 0 to ~20 mismatches per 2^20 rays between correct systems
+// (docs/performance.md#embree-setup-and-mismatches).
 constexpr uint64_t kMismatchTolerance = 20;
 
 }  // namespace

@@ -1,7 +1,8 @@
-// --check-reference: the hit counts and sums of t that reference/performance-anchors.md §3.2
+// --check-reference: the hit counts and sums of t that docs/performance.md#ray-sets
 // lists for Embree MEDIUM on the canonical rays, reproduced with Debian's Embree on our scenes
-// and rays; and rtlab's reference BVH compared ray by ray with Embree (§3.5: expect 0 to ~20
-// mismatches per 2^20 rays). The ctest bench_reference_hits runs it.
+// and rays; and rtlab's reference BVH compared ray by ray with Embree
+// (docs/performance.md#embree-setup-and-mismatches: expect 0 to ~20 mismatches per 2^20 rays).
+// The ctest bench_reference_hits runs it.
 #pragma once
 
 #include <string>

@@ -52,8 +52,8 @@ std::vector<std::string> allSystemLabels();
 // Runs the benchmark; progress goes to stderr.
 std::vector<ThroughputRecord> runThroughput(const ThroughputOptions& options);
 
-// Mismatch between two results (reference/performance-anchors.md §3.5): hit/miss differs, or
-// |t - tReference| > 1e-4 * max(1, tReference).
+// Mismatch between two results (docs/performance.md#embree-setup-and-mismatches): hit/miss
+// differs, or |t - tReference| > 1e-4 * max(1, tReference).
 bool resultsDiffer(const TraceResult& result, const TraceResult& reference);
 
 }  // namespace rtlab::bench

@@ -1,4 +1,4 @@
-// The timing protocol of reference/performance-anchors.md §3.4.
+// The timing protocol of docs/performance.md#what-is-measured (Protocol).
 //  * Build: one warm-up build, then the median of 50 (< 20k triangles), 10 (< 200k) or 3
 //    repeats; "1T" builds run with the process pinned to one CPU.
 //  * Trace: the whole ray set per pass, handed out in chunks of 4,096 consecutive rays through

@@ -1,5 +1,5 @@
-// The unit cases of the numerical stress catalogue (../shared/reference/numerical-robustness.md
-// part B, section 10), with their exact inputs and expected outputs, as the a0 tests use them.
+// The unit cases of the numerical stress catalogue (docs/conventions.md#stress-catalogue), with
+// their exact inputs and expected outputs, as the a0 tests use them.
 // Ids follow the catalogue (BOX-01.3 is row 3 of BOX-01's truth table).
 #pragma once
 

@@ -1,6 +1,7 @@
 // A closed test mesh shared by the test files: an icosahedron subdivided `levels` times, its
 // vertices on the unit sphere, indexed so that neighbouring triangles share bit-identical
-// vertices (numerical-robustness.md, TRI-04). Two levels give 162 vertices and 320 triangles.
+// vertices (docs/conventions.md#stress-catalogue, TRI-04). Two levels give 162 vertices and
+// 320 triangles.
 #pragma once
 
 #include "framework/core/vec.h"

@@ -1,4 +1,4 @@
-// The stress catalogue of numerical-robustness.md (part B) that applies to assignment a0, run
+// The stress catalogue (docs/conventions.md#stress-catalogue) as far as it applies to a0, run
 // against the reference solution: the slab test (BOX-*), the watertight triangle (TRI-*,
 // BIG-01) and the sphere. tests/CMakeLists.txt builds this file twice: as test_a0_stress, and
 // as test_a0_stress_fma with the a0 solution compiled with FMA contraction (ENV-01).
@@ -167,7 +167,7 @@ TEST_CASE("TRI-04: 2e5 rays at edges and 2e5 at vertices of a closed icosphere n
 }
 
 TEST_CASE("the mistake u > 1 || v > 1: the mirrored half of the parallelogram is a miss") {
-    // numerical-robustness.md 2.2 (its TRI-05 entry is cited there but not in the catalogue):
+    // TRI-05 (docs/conventions.md#stress-catalogue), the classic Moller-Trumbore student bug:
     // (0.75, 0.75) lies in the parallelogram spanned by the unit triangle, outside the triangle.
     CHECK_FALSE(hitTriangle(Ray{{0.75f, 0.75f, 1.0f}, {0.0f, 0.0f, -1.0f}}, kUnitTriangle));
     CHECK(hitTriangle(Ray{{0.25f, 0.25f, 1.0f}, {0.0f, 0.0f, -1.0f}}, kUnitTriangle));

@@ -1,5 +1,5 @@
 // Camera::generateRay against POV-Ray's camera, rebuilt here in double exactly as
-// reference/pov-ray-and-blender.md §1.2/§1.3 describes Parser::Parse_Camera and
+// docs/verification.md#1-the-exporter-rtlab-export-pov describes Parser::Parse_Camera and
 // TracePixel::CreateCameraRay, for the glTF recipe
 //   location P  right -x*W/H  up y  angle degrees(2 atan(W/H tan(yfov/2)))  sky S  look_at P+F.
 #include "framework/scene/camera.h"

@@ -1,6 +1,7 @@
 // The procedural benchmark scenes and ray sets against the facts of
-// reference/performance-anchors.md §3.1-3.2: triangle counts, bounds, spot rays, checksums.
-// (The Embree hit counts of §3.2 are checked by the bench_reference_hits test in bench/.)
+// docs/performance.md#scene-definitions and #ray-sets: triangle counts, bounds, spot rays,
+// checksums. (The Embree hit counts of docs/performance.md#ray-sets are checked by the
+// bench_reference_hits test in bench/.)
 #include "framework/core/fnv1a.h"
 #include "framework/scene/benchmark_rays.h"
 #include "framework/scene/benchmark_scenes.h"

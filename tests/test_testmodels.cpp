@@ -73,7 +73,7 @@ TEST_CASE("assimp-testmodels: every glTF file loads or fails with one line namin
     CHECK(rejected > 0);  // the package holds broken files on purpose
 }
 
-TEST_CASE("assimp-testmodels: 2CylinderEngine.glb matches performance-anchors.md") {
+TEST_CASE("assimp-testmodels: 2CylinderEngine.glb matches docs/performance.md") {
     const fs::path engine = kModels / "glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
     REQUIRE(fs::exists(engine));
     Scene scene = loadGltf(engine.string());

@@ -1,5 +1,5 @@
 // rtlab scene generate|rays|checksums: the procedural benchmark scenes and the benchmark ray
-// sets of reference/performance-anchors.md, and their FNV-1a fingerprints.
+// sets of docs/performance.md#what-is-measured, and their FNV-1a fingerprints.
 #include "framework/cli/commands.h"
 #include "framework/core/error.h"
 #include "framework/scene/benchmark_rays.h"
@@ -82,7 +82,7 @@ void printChecksums(const std::string& nameOrPath) {
 
 void addSceneCommand(CLI::App& app) {
     CLI::App* scene = app.add_subcommand(
-        "scene", "Benchmark scenes and ray sets (docs/performance.md, reference/performance-anchors.md)");
+        "scene", "Benchmark scenes and ray sets (docs/performance.md#what-is-measured)");
     scene->require_subcommand(1);
 
     auto generateOptions = std::make_shared<GenerateOptions>();

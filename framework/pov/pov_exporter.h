@@ -1,5 +1,5 @@
 // Writes a Scene as a POV-Ray 3.7 scene file that renders the same image as our renderer
-// (recipe and measurements: docs/verification.md, pov-ray-and-blender.md):
+// (recipe and measurements: docs/verification.md#1-the-exporter-rtlab-export-pov):
 //  - camera: one ray through each pixel centre, `right -x*aspect` for right-handed glTF data,
 //    POV-Ray's horizontal `angle` derived from our vertical field of view, `sky` = camera up;
 //  - point lights with the fade trick (fade_distance kPovFadeDistance, fade_power 2), so the

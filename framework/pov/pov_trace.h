@@ -23,7 +23,8 @@ inline constexpr double kPovTraceMinDistance = 1e-4;
 inline constexpr double kHitSetEdgeMargin = 1e-6;
 
 // Hit points must agree within this fraction of the scene's size (its bounding-box diagonal,
-// at least 1): the float32 bound of pov-ray-and-blender.md §5; double triangles do far better.
+// at least 1): the float32 bound of mesh2 hits
+// (docs/verification.md#5-hit-sets-rtlab-refs---hits); double triangles do far better.
 inline constexpr double kHitSetPointTolerance = 1e-6;
 
 struct PovTraceHit {

@@ -1,4 +1,4 @@
-// The benchmark ray sets of reference/performance-anchors.md §3.2, generated bit for bit (this
+// The benchmark ray sets of docs/performance.md#ray-sets, generated bit for bit (this
 // file's .cpp is compiled with -ffp-contract=off): 1024x1024 primary rays from a fixed
 // viewpoint and 2^20 incoherent rays starting inside the scene's bounds. All rays have
 // tMin = 0, tMax = +inf and unit-length directions.

@@ -1,6 +1,7 @@
-// The procedural benchmark meshes of reference/performance-anchors.md §3.1, generated bit for
+// The procedural benchmark meshes of docs/performance.md#scene-definitions, generated bit for
 // bit as specified there (this file's .cpp is compiled with -ffp-contract=off), and the
-// benchmark viewpoint that every benchmark scene shares (§3.2, primary rays).
+// benchmark viewpoint that every benchmark scene shares (docs/performance.md#ray-sets,
+// primary rays).
 #pragma once
 
 #include "framework/core/bounds.h"
@@ -45,7 +46,7 @@ Scene loadOrGenerateScene(const std::string& nameOrPath);
 // A renderable scene around any mesh (same material, camera and light as above).
 Scene sceneFromMesh(TriangleMesh mesh, const std::string& sourcePath);
 
-// FNV-1a 64 over the 9 floats of every triangle in index order (performance-anchors.md §3.2).
+// FNV-1a 64 over the 9 floats of every triangle in index order (docs/performance.md#checksums).
 uint64_t triangleChecksum(const Scene& scene);
 
 }  // namespace rtlab

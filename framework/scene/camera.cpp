@@ -9,9 +9,10 @@ Ray Camera::generateRay(int i, int j, int width, int height) const {
 }
 
 Ray Camera::generateRayThrough(double x, double y, int width, int height) const {
-    // POV-Ray's construction (pov-ray-and-blender.md §1): D has length 0.5 / tan(yfov/2),
-    // R = aspect * normalize(D x sky) (right-handed data), U = unit sky component orthogonal
-    // to D. Everything in double, as POV-Ray does, then rounded once to float.
+    // POV-Ray's construction (docs/verification.md#1-the-exporter-rtlab-export-pov): D has
+    // length 0.5 / tan(yfov/2), R = aspect * normalize(D x sky) (right-handed data), U = unit
+    // sky component orthogonal to D. Everything in double, as POV-Ray does, then rounded once
+    // to float.
     double aspect = static_cast<double>(width) / height;
     DVec3 d = glm::normalize(forward) * (0.5 / std::tan(yfov / 2.0));
     DVec3 r = glm::normalize(glm::cross(d, up)) * aspect;
