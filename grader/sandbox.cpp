@@ -33,8 +33,8 @@ using worker::RecordKind;
 constexpr size_t kMaxCapturedOutput = 4096;
 constexpr uint64_t kWorkerBaseMiB = 64;  // the worker's own code, stacks and the C runtime
 constexpr uid_t kNobody = 65534;
-// The first record must arrive within this, whatever the phase limits: start-up is static.
-constexpr double kStartSeconds = 2.0;
+// After the end of its request a worker has this long to say Done and exit.
+constexpr double kEndSeconds = 2.0;
 
 std::string signalName(int sig) {
     const char* abbreviation = sigabbrev_np(sig);
@@ -125,8 +125,6 @@ public:
         pid_ = pid;
         requestFd_ = requestPipe[1];
         fcntl(requestFd_, F_SETFL, O_NONBLOCK);
-        startedAt_ = Clock::now();
-        deadline_ = startedAt_ + seconds(kStartSeconds);
         queueRequest();
         converse(resultPipe[0], outputPipe[0]);
         if (requestFd_ >= 0) close(requestFd_);
@@ -148,7 +146,7 @@ private:
         size_t step = conversation_->step();
         if (step >= order_.size()) {
             put<uint32_t>(worker::kEndOfRequest);
-            deadline_ = Clock::now() + seconds(kStartSeconds);
+            deadline_ = Clock::now() + seconds(kEndSeconds);
             return;
         }
         const ChildPhase& phase = phases_[order_[step]];
@@ -336,7 +334,7 @@ private:
     std::vector<uint8_t> pendingRequest_;
     pid_t pid_ = -1;
     int requestFd_ = -1;
-    Clock::time_point startedAt_, phaseRequestedAt_, deadline_;
+    Clock::time_point phaseRequestedAt_, deadline_;
     std::optional<double> cpuAtStart_;
     bool overran_ = false;
 };
