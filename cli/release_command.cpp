@@ -3,7 +3,7 @@
 // executable was built from (git archive HEAD, never the working tree, so nothing half-edited
 // or private ships), minus everything that holds an answer or needs one, and becomes a fresh
 // git repository with a single commit.
-#include "framework/cli/commands.h"
+#include "cli/commands.h"
 #include "framework/core/error.h"
 #include "framework/pov/povray_process.h"
 #include "grader/process_runner.h"

@@ -7,7 +7,7 @@
 // reference's scene with our renderer (the implementation this executable links) and checks the
 // parity target. Exit status 1 on any mismatch.
 #include "framework/accel/accelerator.h"
-#include "framework/cli/commands.h"
+#include "cli/commands.h"
 #include "framework/core/error.h"
 #include "framework/core/sha256.h"
 #include "framework/pov/pov_exporter.h"

@@ -2,7 +2,7 @@
 // next to rtlab, rtlab-solution-bench next to rtlab-solution — with the same arguments
 // (docs/performance.md). The benchmarks live in their own executables so that only they link
 // Embree, the peer they are measured against; they are built where libembree-dev is installed.
-#include "framework/cli/commands.h"
+#include "cli/commands.h"
 #include "framework/core/error.h"
 
 #include <unistd.h>

@@ -2,7 +2,7 @@
 // reports (docs/grading.md, "Isolation and trust"). It links no assignment code: the code to
 // grade runs in a worker executable (--worker), sandboxed. `rtlab grade` and
 // `rtlab-solution grade` hand over to it with their own worker.
-#include "framework/cli/commands.h"
+#include "cli/commands.h"
 #include "framework/core/error.h"
 
 #include <iostream>

@@ -2,7 +2,7 @@
 // [--max-share FRACTION]: two images through OpenImageIO (framework/render/image_compare.h).
 // Errors are printed in image units and in 16-bit codes; the exit status is 1 when a
 // tolerance given on the command line is exceeded.
-#include "framework/cli/commands.h"
+#include "cli/commands.h"
 #include "framework/core/error.h"
 #include "framework/render/image_compare.h"
 

@@ -2,7 +2,7 @@
 // (rtlab: assignments/, rtlab-solution: solutions/), a student's submission folder, or a
 // folder of submissions (or one shard of it), and writes the reports asked for;
 // `rtlab grade merge` joins per-student reports into the CSV.
-#include "framework/cli/commands.h"
+#include "cli/commands.h"
 #include "framework/core/error.h"
 #include "grader/batch_grading.h"
 #include "grader/grades_csv.h"
@@ -92,7 +92,7 @@ void gradeFolderOfSubmissions(const GradeFlags& flags) {
 void merge(const MergeFlags& flags) {
     std::vector<std::string> reports = grader::reportsInFolders(flags.reportFolders);
     if (reports.empty()) throw Error(flags.reportFolders.front() + ": no JSON reports to merge");
-    std::string rubric = flags.rubric.empty() ? std::string(RTLAB_GRADER_SOURCE_DIR) + "/grader/rubric.json" : flags.rubric;
+    std::string rubric = flags.rubric.empty() ? std::string(RTLAB_REPOSITORY_DIR) + "/grader/rubric.json" : flags.rubric;
     grader::writeGradesCsv(reports, flags.csv, grader::Rubric::load(rubric).precision());
     std::cout << "merged " << reports.size() << " reports into " << flags.csv << "\n";
 }
@@ -110,7 +110,7 @@ void writeReports(const grader::GradingReport& report, const GradeFlags& flags) 
 
 void grade(GradeFlags& flags) {
     grader::GradingOptions& g = flags.grading;
-    if (g.sourceDir.empty()) g.sourceDir = RTLAB_GRADER_SOURCE_DIR;
+    if (g.sourceDir.empty()) g.sourceDir = RTLAB_REPOSITORY_DIR;
     if (g.modelsDir.empty()) g.modelsDir = (executableDir() / "models").string();
     if (!fs::is_directory(g.sourceDir + "/grader"))
         throw Error("--root " + g.sourceDir + " is not the rtlab repository (no grader/ folder)");

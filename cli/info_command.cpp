@@ -1,6 +1,6 @@
 // rtlab info SCENE [--camera NAME]: what the loader made of a scene — primitives, bounds,
 // materials, lights, cameras and the glTF features it met.
-#include "framework/cli/commands.h"
+#include "cli/commands.h"
 #include "framework/scene/gltf_loader.h"
 
 #include <cmath>

@@ -1,8 +1,8 @@
 // rtlab hits SCENE --rays FILE -o OUT.csv: closest hits of a ray file through an accelerator
 // or the exact oracle, one CSV row per ray (docs/cli.md). The grader compares such files.
 #include "framework/accel/accelerator.h"
-#include "framework/cli/accelerator_options.h"
-#include "framework/cli/commands.h"
+#include "cli/accelerator_options.h"
+#include "cli/commands.h"
 #include "framework/core/error.h"
 #include "framework/core/ray_file.h"
 #include "framework/oracle/oracle.h"

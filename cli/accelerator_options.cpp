@@ -1,4 +1,4 @@
-#include "framework/cli/accelerator_options.h"
+#include "cli/accelerator_options.h"
 
 namespace rtlab::cli {
 

@@ -1,6 +1,6 @@
 // rtlab scene generate|rays|checksums: the procedural benchmark scenes and the benchmark ray
 // sets of docs/performance.md#what-is-measured, and their FNV-1a fingerprints.
-#include "framework/cli/commands.h"
+#include "cli/commands.h"
 #include "framework/core/error.h"
 #include "framework/scene/benchmark_rays.h"
 #include "framework/scene/benchmark_scenes.h"

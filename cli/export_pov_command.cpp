@@ -1,6 +1,6 @@
 // rtlab export-pov SCENE -o scene.pov [--width W --height H] [--camera NAME]: the scene as a
 // POV-Ray 3.7 file that renders what `rtlab render` renders (framework/pov/pov_exporter.h).
-#include "framework/cli/commands.h"
+#include "cli/commands.h"
 #include "framework/core/error.h"
 #include "framework/pov/pov_exporter.h"
 #include "framework/pov/pov_reference.h"

@@ -1,4 +1,4 @@
-#include "framework/cli/commands.h"
+#include "cli/commands.h"
 #include "framework/core/error.h"
 
 #include <iostream>
@@ -8,7 +8,7 @@ namespace rtlab::cli {
 int run(int argc, char** argv) {
     CLI::App app{"rtlab: ray-tracing acceleration structures and radiometry, by assignment"};
     app.require_subcommand(1);
-    app.set_version_flag("--version", "rtlab 0.1.0");
+    app.set_version_flag("--version", "rtlab " RTLAB_VERSION);
     addInfoCommand(app);
     addRenderCommand(app);
     addHitsCommand(app);

@@ -1,8 +1,8 @@
 // rtlab render SCENE -o OUT: renders a glTF scene with the chosen accelerator
 // (docs/rendering.md) and prints one summary line: time, throughput, work per ray.
 #include "framework/accel/accelerator.h"
-#include "framework/cli/accelerator_options.h"
-#include "framework/cli/commands.h"
+#include "cli/accelerator_options.h"
+#include "cli/commands.h"
 #include "framework/core/error.h"
 #include "framework/render/image_io.h"
 #include "framework/render/renderer.h"
