@@ -1,6 +1,6 @@
 // Image comparison through OpenImageIO (framework/render/image_compare.h) and `rtlab compare`,
 // on 16-bit PNGs with known differences in codes.
-#include "framework/cli/commands.h"
+#include "cli/commands.h"
 #include "framework/core/error.h"
 #include "framework/render/image_compare.h"
 #include "framework/render/image_io.h"

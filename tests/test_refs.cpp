@@ -1,7 +1,7 @@
 // `rtlab refs` on a scratch copy of a committed scene: renders once, skips what is up to date,
 // re-renders what changed, --check catches a modified reference, --hits agrees with the oracle.
 // Runs live POV-Ray.
-#include "framework/cli/commands.h"
+#include "cli/commands.h"
 #include "framework/pov/reference_manifest.h"
 #include "framework/render/image_io.h"
 

@@ -1,6 +1,6 @@
 // `rtlab render` and `rtlab hits` end to end on a committed glTF scene: files written, the CSV
 // contract, the accelerator agreeing with the oracle, and one-line errors with exit code 1.
-#include "framework/cli/commands.h"
+#include "cli/commands.h"
 #include "framework/core/error.h"
 #include "framework/core/ray_file.h"
 #include "framework/render/image_io.h"

@@ -24,7 +24,7 @@ scratch_repository() {
 }
 
 # The files committed at HEAD of repository REPO that a student release keeps, sorted: everything but
-# what rtlab release leaves out (framework/cli/release_command.cpp).
+# what rtlab release leaves out (cli/release_command.cpp).
 released_files() {
     git -C "$1" ls-tree -r --name-only HEAD | grep -Ev '^(solutions|fast|grader/fixtures|bench|tests|\.ci)/' | sort
 }
