@@ -22,7 +22,7 @@ deps:
 	@scripts/install-deps
 
 build: deps
-	@cmake --preset release > build-configure.log || (cat build-configure.log; exit 1)
+	@mkdir -p build && cmake --preset release > build/configure.log || (cat build/configure.log; exit 1)
 	@cmake --build --preset release -j $(JOBS)
 
 models: build
@@ -31,7 +31,7 @@ models: build
 # Only what grading needs: the command, the grader and the worker with the code to grade.
 GRADE_TARGETS := $(notdir $(RTLAB)) rtlab-grader $(if $(filter solutions,$(IMPL)),rtlab-worker-solution,rtlab-worker)
 grade: deps
-	@cmake --preset release > build-configure.log || (cat build-configure.log; exit 1)
+	@mkdir -p build && cmake --preset release > build/configure.log || (cat build/configure.log; exit 1)
 	@scripts/quiet-build build/grade-build.log cmake --build --preset release -j $(JOBS) --target $(GRADE_TARGETS)
 	@scripts/fetch-models build/models
 	@$(RTLAB) grade
@@ -40,7 +40,7 @@ test: build models
 	@ctest --preset release -j $(JOBS)
 
 test-sanitize: deps
-	@cmake --preset sanitize > build-configure-sanitize.log || (cat build-configure-sanitize.log; exit 1)
+	@mkdir -p build-sanitize && cmake --preset sanitize > build-sanitize/configure.log || (cat build-sanitize/configure.log; exit 1)
 	@cmake --build --preset sanitize -j $(JOBS)
 	@scripts/fetch-models build-sanitize/models
 	@ctest --preset sanitize -j $(JOBS) -L sanitize
@@ -49,7 +49,7 @@ test-sanitize: deps
 # the figures compare with the anchors (docs/performance.md#what-is-measured); the student
 # build stays portable.
 bench: deps
-	@cmake --preset bench > build-configure-bench.log || (cat build-configure-bench.log; exit 1)
+	@mkdir -p build-bench && cmake --preset bench > build-bench/configure.log || (cat build-bench/configure.log; exit 1)
 	@cmake --build --preset bench -j $(JOBS) --target rtlab-solution rtlab-solution-bench
 	@scripts/fetch-models build-bench/models
 	@build-bench/rtlab-solution bench --out build-bench/bench-results
@@ -67,7 +67,7 @@ fuzz-ci: deps
 
 # Its own build (preset tsan, build-tsan/): only the executables scripts/run-tsan runs.
 test-tsan: deps
-	@cmake --preset tsan > build-configure-tsan.log || (cat build-configure-tsan.log; exit 1)
+	@mkdir -p build-tsan && cmake --preset tsan > build-tsan/configure.log || (cat build-tsan/configure.log; exit 1)
 	@cmake --build --preset tsan -j $(JOBS) --target rtlab-solution rtlab-solution-bench
 	@scripts/run-tsan build-tsan
 

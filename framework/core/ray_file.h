@@ -1,7 +1,7 @@
-// Rays as text (docs/cli.md, "rtlab hits"): one ray per line, `ox oy oz dx dy dz` with an
-// optional `tmin tmax` (default 0 and +inf); blank lines and `#` comments are ignored. Numbers
-// are read as float with correct rounding, so a file written with 9 significant digits
-// reproduces the rays bit for bit.
+// Rays as text (docs/rendering.md#hits-rtlab-hits; a sample is scenes/rays/sample.rays): one
+// ray per line, `ox oy oz dx dy dz` with an optional `tmin tmax` (default 0 and +inf); blank
+// lines and `#` comments are ignored. Numbers are read as float with correct rounding, so a
+// file written with 9 significant digits reproduces the rays bit for bit.
 #pragma once
 
 #include "framework/core/ray.h"
