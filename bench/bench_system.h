@@ -3,7 +3,7 @@
 // (docs/performance.md#embree-setup-and-mismatches).
 #pragma once
 
-#include "framework/accel/traversal_stats.h"
+#include "framework/interface/traversal_stats.h"
 #include "framework/core/hit.h"
 #include "framework/core/vec.h"
 

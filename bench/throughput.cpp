@@ -3,6 +3,7 @@
 #include "bench/bench_scenes.h"
 #include "bench/embree_system.h"
 #include "bench/rtlab_system.h"
+#include "framework/accel/accelerator_registry.h"
 #include "framework/accel/primitive_set.h"
 #include "framework/core/error.h"
 
@@ -16,13 +17,6 @@ namespace rtlab::bench {
 namespace {
 
 constexpr size_t kBruteForceRayStride = 64;
-
-// The binary BVHs of a1/a2 as students traverse them, then the framework's four- and
-// eight-wide traversals of the SAH trees (fast/wide_bvh_accelerator.h).
-const std::vector<std::string> kRtlabAccelerators{
-    "brute",          "bvh-median",     "bvh-middle", "bvh-equal",     "bvh-sah",       "bvh-buckets:4",
-    "bvh-buckets:8",  "bvh-buckets:12", "bvh-buckets:16", "bvh-buckets:32", "bvh4-sah", "bvh4-buckets:12",
-    "bvh8-sah",       "bvh8-buckets:12"};
 
 std::vector<BenchRay> benchRays(RayKind kind, const Bounds3f& bounds, size_t stride) {
     std::vector<Ray> rays = makeBenchmarkRays(kind, bounds);
@@ -58,7 +52,10 @@ bool selected(const ThroughputOptions& options, const std::string& label) {
 
 std::vector<std::string> allSystemLabels() {
     std::vector<std::string> labels;
-    for (const std::string& name : kRtlabAccelerators) labels.push_back("rtlab:" + name);
+    // Every structure's own rows (the accelerator registry): the a1/a2 BVHs as students traverse
+    // them, the grid's C sweep, then the fast paths' wide traversals of the SAH trees.
+    for (const AcceleratorType* type : acceleratorTypes())
+        for (const std::string& name : type->benchRows) labels.push_back("rtlab:" + name);
     labels.push_back("embree:medium");
     labels.push_back("embree:high");
     return labels;

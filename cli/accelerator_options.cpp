@@ -5,7 +5,7 @@ namespace rtlab::cli {
 void addAcceleratorOptions(CLI::App* command, AcceleratorSpec& spec, const std::string& accelWhat) {
     // The names come from the accelerators this executable links (bvh_layouts.h), so rtlab's
     // help does not offer the fast paths only rtlab-solution has.
-    command->add_option("--accel", spec.name, accelWhat + ": " + acceleratorNames())->capture_default_str();
+    command->add_option("--accel", spec.name, accelWhat + ", one of:\n" + acceleratorNames())->capture_default_str();
     command->add_option("--max-leaf", spec.maxLeaf, "Largest leaf a BVH may keep unsplit")
         ->capture_default_str();
     command

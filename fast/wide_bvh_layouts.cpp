@@ -1,18 +1,22 @@
-// Makes the wide BVHs --accel names (bvh4-*, bvh8-*) of every executable that links rtlab_fast.
-// rtlab_fast is an object library, so this file's registration is always linked in.
+// Registers the wide BVHs (bvh4, bvh8) in every executable that links rtlab_fast: the same
+// tree as the binary bvh, traversed four or eight children at a time. rtlab_fast is an object
+// library, so this file's registrations are always linked in.
 #include "fast/wide_bvh_accelerator.h"
-#include "framework/accel/bvh_layouts.h"
+#include "framework/accel/accelerator_registry.h"
+#include "framework/accel/bvh_accelerator.h"
 
 namespace rtlab {
 namespace {
 
 template <int W>
-std::unique_ptr<Accelerator> makeWideBvh(const BvhOptions& options) {
-    return std::make_unique<WideBvhAccelerator<W>>(options);
+AcceleratorType wideBvhType(const char* name, const char* description) {
+    return {name, description, bvhTreeOptions(),
+            [](const AcceleratorParameters& p) { return std::make_unique<WideBvhAccelerator<W>>(bvhOptionsFrom(p)); },
+            {std::string(name) + "-sah", std::string(name) + "-buckets:12"}};
 }
 
-const BvhLayoutRegistration kFourWide{{"bvh4", "the same tree four wide, fast/", makeWideBvh<4>}};
-const BvhLayoutRegistration kEightWide{{"bvh8", "the same tree eight wide, fast/", makeWideBvh<8>}};
+const AcceleratorRegistration kFourWide{wideBvhType<4>("bvh4", "the bvh tree four wide (fast/)")};
+const AcceleratorRegistration kEightWide{wideBvhType<8>("bvh8", "the bvh tree eight wide (fast/)")};
 
 }  // namespace
 }  // namespace rtlab

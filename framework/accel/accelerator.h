@@ -1,13 +1,13 @@
-// The interface every acceleration structure implements (brute force, the BVH family, later
-// grids and trees): build once over a primitive set, then answer closest-hit and any-hit
-// queries. Work is counted through the Traversal context (traversal.h).
+// The interface every acceleration structure implements (brute force, the BVH family, the
+// grid, later the trees): build once over a primitive set, then answer closest-hit and any-hit
+// queries. Work is counted through the Traversal context (framework/interface/traversal.h).
 #pragma once
 
 #include "framework/accel/primitive_set.h"
 #include "framework/accel/structure_view.h"
-#include "framework/accel/traversal_stats.h"
 #include "framework/core/hit.h"
 #include "framework/core/ray.h"
+#include "framework/interface/traversal_stats.h"
 
 #include <memory>
 #include <string>
@@ -28,10 +28,9 @@ public:
     virtual size_t memoryBytes() const = 0;
 };
 
-// Accelerator names accepted by --accel (docs/conventions.md):
-//   brute | bvh-median | bvh-middle | bvh-equal | bvh-sah | bvh-buckets[:B]
-// and, where an executable links them, other traversals of the same trees (bvh_layouts.h):
-//   bvh4-median ... bvh4-buckets[:B], bvh8-... likewise (the wide BVHs of fast/)
+// What --accel and its companion flags ask for. The name is parsed by the accelerator
+// registry (accelerator_registry.h); the flags override the BVH options of the same meaning
+// (leaf, traversal, axes) and are an error for a structure that has no such option.
 struct AcceleratorSpec {
     std::string name = "bvh-buckets";
     int maxLeaf = 4;
@@ -39,10 +38,10 @@ struct AcceleratorSpec {
     bool sahAllAxes = false;          // bvh-sah, bvh-buckets: try x, y and z, not only the longest axis
 };
 
-// Throws rtlab::Error with the list of valid names when spec.name is unknown.
+// Throws rtlab::Error naming the problem and the valid names when spec cannot be built.
 std::unique_ptr<Accelerator> makeAccelerator(const AcceleratorSpec& spec);
 
-// The names makeAccelerator accepts in this executable, for help texts and errors.
+// The structures and options this executable knows, one line each, for help texts.
 std::string acceleratorNames();
 
 }  // namespace rtlab

@@ -1,6 +1,7 @@
 #include "framework/accel/brute_force.h"
 
-#include "framework/accel/traversal.h"
+#include "framework/accel/accelerator_registry.h"
+#include "framework/interface/traversal.h"
 
 namespace rtlab {
 
@@ -30,6 +31,15 @@ StructureView BruteForce::structure() const {
     leaf.primCount = primitives_->size();
     view.nodes.push_back(leaf);
     return view;
+}
+
+}  // namespace rtlab
+
+namespace rtlab {
+
+AcceleratorType bruteForceType() {
+    return {"brute", "every primitive for every ray: the baseline", {},
+            [](const AcceleratorParameters&) { return std::make_unique<BruteForce>(); }, {"brute"}};
 }
 
 }  // namespace rtlab

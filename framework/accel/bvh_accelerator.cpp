@@ -1,6 +1,6 @@
 #include "framework/accel/bvh_accelerator.h"
 
-#include "framework/accel/traversal.h"
+#include "framework/interface/traversal.h"
 #include "framework/interface/a1_bvh.h"
 
 namespace rtlab {
@@ -59,6 +59,36 @@ StructureView BvhAccelerator::structure() const {
         view.nodes.push_back(out);
     }
     return view;
+}
+
+}  // namespace rtlab
+
+namespace rtlab {
+
+BvhOptions bvhOptionsFrom(const AcceleratorParameters& parameters) {
+    BvhOptions options;
+    const std::string& split = parameters.word("split");
+    options.method = split == "median"   ? SplitMethod::Median
+                     : split == "middle" ? SplitMethod::Middle
+                     : split == "equal"  ? SplitMethod::EqualCounts
+                     : split == "sah"    ? SplitMethod::SahSweep
+                                         : SplitMethod::SahBuckets;
+    options.buckets = parameters.integer("B");
+    options.maxLeaf = parameters.integer("leaf");
+    options.allAxes = parameters.word("axes") == "all";
+    return options;
+}
+
+AcceleratorType bvhType() {
+    std::vector<AcceleratorOption> options = bvhTreeOptions();
+    options.push_back({"traversal", "ordered (near child first) or recursive (the lecture's pseudocode)", "ordered", 0, 0,
+                       false, {"ordered", "recursive"}});
+    return {"bvh", "binary BVH (a1, a2)", options,
+            [](const AcceleratorParameters& p) {
+                return std::make_unique<BvhAccelerator>(bvhOptionsFrom(p), p.word("traversal") == "recursive");
+            },
+            {"bvh-median", "bvh-middle", "bvh-equal", "bvh-sah", "bvh-buckets:4", "bvh-buckets:8", "bvh-buckets:12",
+             "bvh-buckets:16", "bvh-buckets:32"}};
 }
 
 }  // namespace rtlab

@@ -4,12 +4,16 @@
 #pragma once
 
 #include "framework/accel/accelerator.h"
+#include "framework/accel/accelerator_registry.h"
 #include "framework/interface/bvh.h"
 
 namespace rtlab {
 
 // What buildBvh needs to know of each primitive: bounds, centroid and id, in id order.
 std::vector<BuildPrimitive> buildPrimitivesOf(const PrimitiveSet& primitives);
+
+// The tree options of a bvh, bvh4 or bvh8 name (split, B, leaf, axes).
+BvhOptions bvhOptionsFrom(const AcceleratorParameters& parameters);
 
 class BvhAccelerator final : public Accelerator {
 public:

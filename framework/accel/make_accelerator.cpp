@@ -1,57 +1,95 @@
-// Turns an --accel name into an accelerator.
+// Turns an --accel name and its companion flags into an accelerator, through the registry.
 #include "framework/accel/accelerator.h"
-#include "framework/accel/brute_force.h"
-#include "framework/accel/bvh_accelerator.h"
-#include "framework/accel/bvh_layouts.h"
+#include "framework/accel/accelerator_registry.h"
 #include "framework/core/error.h"
 
-#include <charconv>
+#include <algorithm>
 
 namespace rtlab {
+namespace {
+
+struct ParsedName {
+    const AcceleratorType* type = nullptr;
+    std::string options;  // "k=v,k=v"
+};
+
+// True for a name shaped like a wide BVH's ("bvh" and a width, e.g. "bvh4"): a fast path this
+// executable may have been linked without.
+bool isWideBvhName(std::string_view name) {
+    return name.size() > 3 && name.starts_with("bvh") &&
+           std::all_of(name.begin() + 3, name.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+ParsedName parseName(const std::string& name) {
+    size_t colon = name.find(':');
+    std::string base = name.substr(0, colon);
+    std::string rest = colon == std::string::npos ? "" : name.substr(colon + 1);
+    ParsedName parsed{findAcceleratorType(base), rest};
+    // The older spelling <type>-<split>[:<B>]: bvh-median, bvh-buckets:12, bvh4-sah.
+    size_t dash = base.find('-');
+    if (!parsed.type && dash != std::string::npos) {
+        std::string typeName = base.substr(0, dash), split = base.substr(dash + 1);
+        parsed.type = findAcceleratorType(typeName);
+        if (parsed.type && parsed.type->option("split")) {
+            if (!rest.empty() && split != "buckets")
+                throw Error("--accel " + name + ": only bvh-buckets takes a bucket count after ':'");
+            parsed.options = "split=" + split + (rest.empty() ? "" : ",B=" + rest);
+        } else {
+            parsed.type = nullptr;
+            base = typeName;
+        }
+    }
+    if (!parsed.type && isWideBvhName(base))
+        throw Error("--accel " + name + ": the wide BVHs are fast paths, built only into rtlab-solution and the benchmarks");
+    if (!parsed.type) {
+        std::string names;
+        for (const AcceleratorType* type : acceleratorTypes()) names += (names.empty() ? "" : ", ") + type->name;
+        throw Error("--accel " + name + " is not an accelerator (valid: " + names + ", with key=value options; see --help)");
+    }
+    return parsed;
+}
+
+// A flag of the command line set to something other than its default names an option the
+// structure must have; it overrides the name's value.
+void applyFlag(const AcceleratorType& type, const std::string& name, std::string& options, const char* key,
+               const std::string& value, const std::string& flag) {
+    if (!type.option(key)) throw Error(flag + " is not an option of " + name + " (its structure has no '" + key + "')");
+    // Replace a value the name gave, so the flag wins and the key is not given twice.
+    std::string rebuilt;
+    size_t begin = 0;
+    while (begin < options.size()) {
+        size_t end = std::min(options.find(',', begin), options.size());
+        std::string item = options.substr(begin, end - begin);
+        if (!item.starts_with(std::string(key) + "=")) rebuilt += (rebuilt.empty() ? "" : ",") + item;
+        begin = end + 1;
+    }
+    options = rebuilt + (rebuilt.empty() ? "" : ",") + key + "=" + value;
+}
+
+}  // namespace
 
 std::string acceleratorNames() {
-    std::string names = "brute, bvh-median, bvh-middle, bvh-equal, bvh-sah, bvh-buckets[:B] with B in 2..32";
-    for (const BvhLayout* layout : bvhLayouts())
-        names += ", " + layout->prefix + "-<method> (" + layout->description + ")";
-    return names;
+    std::string text;
+    for (const AcceleratorType* type : acceleratorTypes()) {
+        text += "  " + type->name + ": " + type->description;
+        for (const AcceleratorOption& o : type->options)
+            text += "\n      " + o.key + "=" + o.rangeText() + " (default " + o.defaultValue + "): " + o.description;
+        text += "\n";
+    }
+    return text + "  older names: <structure>-<split> and <structure>-buckets:<B>, e.g. bvh-median, bvh-buckets:12";
 }
 
 std::unique_ptr<Accelerator> makeAccelerator(const AcceleratorSpec& spec) {
     if (spec.maxLeaf < 1 || spec.maxLeaf > 65535)
         throw Error("--max-leaf " + std::to_string(spec.maxLeaf) + " is out of range (1..65535)");
-    if (spec.name == "brute") return std::make_unique<BruteForce>();
-
-    BvhOptions options;
-    options.maxLeaf = spec.maxLeaf;
-    options.allAxes = spec.sahAllAxes;
-    // <layout>-<method>: the tree bvh-<method> builds, traversed by the layout named before the
-    // dash (bvh is the binary traversal, others are registered in bvh_layouts.h).
-    size_t dash = spec.name.find('-');
-    std::string prefix = dash == std::string::npos ? "" : spec.name.substr(0, dash);
-    const BvhLayout* layout = findBvhLayout(prefix);
-    // An executable without the fast paths names them; one with them lists what it has.
-    if (!layout && bvhLayouts().empty() && isWideBvhPrefix(prefix))
-        throw Error("--accel " + spec.name +
-                    ": the wide BVHs are fast paths, built only into rtlab-solution and the benchmarks");
-    std::string name = layout ? "bvh" + spec.name.substr(dash) : spec.name;
-    if (name.starts_with("bvh-buckets:")) {
-        std::string count = name.substr(12);
-        auto [end, ec] = std::from_chars(count.data(), count.data() + count.size(), options.buckets);
-        if (ec != std::errc() || end != count.data() + count.size() || options.buckets < 2 ||
-            options.buckets > 32)
-            throw Error("--accel " + spec.name + ": the bucket count must be an integer in 2..32");
-        name = "bvh-buckets";
-    }
-    if (name == "bvh-median") options.method = SplitMethod::Median;
-    else if (name == "bvh-middle") options.method = SplitMethod::Middle;
-    else if (name == "bvh-equal") options.method = SplitMethod::EqualCounts;
-    else if (name == "bvh-sah") options.method = SplitMethod::SahSweep;
-    else if (name == "bvh-buckets") options.method = SplitMethod::SahBuckets;
-    else throw Error("--accel " + spec.name + " is not an accelerator (valid: " + acceleratorNames() + ")");
-    if (!layout) return std::make_unique<BvhAccelerator>(options, spec.recursiveTraversal);
+    ParsedName parsed = parseName(spec.name);
+    const AcceleratorSpec defaults;
+    if (spec.maxLeaf != defaults.maxLeaf)
+        applyFlag(*parsed.type, spec.name, parsed.options, "leaf", std::to_string(spec.maxLeaf), "--max-leaf");
     if (spec.recursiveTraversal)
-        throw Error("--traversal recursive applies to the binary BVH only, not to " + spec.name);
-    return layout->make(options);
+        applyFlag(*parsed.type, spec.name, parsed.options, "traversal", "recursive", "--traversal recursive");
+    if (spec.sahAllAxes) applyFlag(*parsed.type, spec.name, parsed.options, "axes", "all", "--sah-axes all");
+    return parsed.type->make(parsed.type->parameters(parsed.options, spec.name));
 }
 
 }  // namespace rtlab

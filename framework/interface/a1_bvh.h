@@ -2,7 +2,7 @@
 // Implemented in assignments/a1_bvh/ (yours) and solutions/a1_bvh/ (reference).
 #pragma once
 
-#include "framework/accel/traversal.h"
+#include "framework/interface/traversal.h"
 #include "framework/core/hit.h"
 #include "framework/interface/bvh.h"
 

@@ -1,7 +1,7 @@
 // a1/a2's functions on the grader's inputs: split calls, a whole build, and traversals of the
 // BVH that build produced.
 #include "framework/accel/bvh_accelerator.h"
-#include "framework/accel/traversal.h"
+#include "framework/interface/traversal.h"
 #include "framework/interface/a1_bvh.h"
 #include "framework/interface/a2_sah.h"
 #include "grader/scene_codec.h"

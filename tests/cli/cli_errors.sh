@@ -67,10 +67,12 @@ one_line_naming "bvh4-sah" "recursive traversal of the wide BVH"
 # The student binary does not link the fast paths (fast/): their names say where they are.
 expect 1 "a wide BVH in the student binary" -- "$student" render "$scene" -o "$work/x.png" --accel bvh4-sah
 one_line_naming "only into rtlab-solution" "a wide BVH in the student binary"
-expect 1 "a wide BVH without a split method" -- "$solution" render "$scene" -o "$work/x.png" --accel bvh4
-one_line_naming "bvh4 is not an accelerator" "a wide BVH without a split method"
+expect 1 "an option value out of its range" -- "$solution" render "$scene" -o "$work/x.png" --accel grid:C=0
+one_line_naming "C must be a number in 1..1000" "an option value out of its range"
+expect 1 "an option the structure does not have" -- "$solution" render "$scene" -o "$work/x.png" --accel grid:B=12
+one_line_naming "'B=12' is not an option of grid" "an option the structure does not have"
 "$student" render --help | grep -q "bvh4" && { echo "FAIL: rtlab render --help offers bvh4"; failures=$((failures + 1)); }
-"$solution" render --help | grep -q "bvh4-<method>" || { echo "FAIL: rtlab-solution render --help lacks bvh4"; failures=$((failures + 1)); }
+"$solution" render --help | grep -q "bvh4:" || { echo "FAIL: rtlab-solution render --help lacks bvh4"; failures=$((failures + 1)); }
 
 release_dir=$work/release-into
 mkdir "$release_dir"

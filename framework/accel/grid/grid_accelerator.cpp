@@ -1,0 +1,68 @@
+#include "framework/accel/grid/grid_accelerator.h"
+
+#include "framework/accel/accelerator_registry.h"
+#include "framework/interface/a3_grid.h"
+
+namespace rtlab {
+
+void GridAccelerator::build(const PrimitiveSet& primitives) {
+    primitives_ = &primitives;
+    std::vector<Bounds3f> bounds;
+    bounds.reserve(primitives.size());
+    for (uint32_t i = 0; i < primitives.size(); ++i) bounds.push_back(primitives.bounds(i));
+    grid_ = gridFrame(bounds, options_);
+    fillGridCells(grid_, bounds);
+}
+
+Hit GridAccelerator::intersect(const Ray& ray, TraversalStats& stats) const {
+    Hit hit;
+    hit.t = ray.tMax;
+    Traversal traversal(*primitives_, ray, stats);
+    intersectGrid(grid_, traversal, hit);
+    if (!hit.found()) hit.t = kInfinity;
+    return hit;
+}
+
+bool GridAccelerator::occluded(const Ray& ray, TraversalStats& stats) const {
+    Traversal traversal(*primitives_, ray, stats);
+    return occludedGrid(grid_, traversal);
+}
+
+StructureView GridAccelerator::structure() const {
+    StructureView view;
+    view.primIndices = grid_.primIndices;
+    StructureNode root;
+    root.bounds = grid_.bounds;
+    root.firstChild = 0;
+    root.childCount = static_cast<uint32_t>(grid_.cellCount());
+    view.nodes.push_back(root);
+    for (int z = 0; z < grid_.resolution[2]; ++z)
+        for (int y = 0; y < grid_.resolution[1]; ++y)
+            for (int x = 0; x < grid_.resolution[0]; ++x) {
+                size_t c = grid_.cellIndex({x, y, z});
+                StructureNode cell;
+                Vec3 lower = grid_.bounds.lower + Vec3(float(x), float(y), float(z)) * grid_.cellWidth;
+                cell.bounds = Bounds3f(lower, lower + grid_.cellWidth);
+                cell.firstPrim = grid_.cellStart[c];
+                cell.primCount = grid_.cellStart[c + 1] - grid_.cellStart[c];
+                view.children.push_back(static_cast<uint32_t>(view.nodes.size()));
+                view.nodes.push_back(cell);
+            }
+    return view;
+}
+
+AcceleratorType gridType() {
+    return {"grid",
+            "uniform grid with the 3D-DDA (a3)",
+            {{"C", "cells per primitive: the lecture's rule cells ~= C * N", "27", 1, 1000, false, {}},
+             {"res", "most cells along any axis", "64", 1, 1024, true, {}}},
+            [](const AcceleratorParameters& p) {
+                GridOptions options;
+                options.cellsPerPrimitive = p.number("C");
+                options.maxResolution = p.integer("res");
+                return std::make_unique<GridAccelerator>(options);
+            },
+            {"grid:C=1", "grid:C=3", "grid:C=9", "grid:C=27", "grid:C=81"}};
+}
+
+}  // namespace rtlab

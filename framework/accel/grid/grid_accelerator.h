@@ -1,0 +1,31 @@
+// Wraps the uniform grid of assignment a3 in the Accelerator interface: building runs the
+// framework's gridFrame and the student's fillGridCells, queries the student's traversal.
+#pragma once
+
+#include "framework/accel/accelerator.h"
+#include "framework/interface/grid.h"
+
+namespace rtlab {
+
+class GridAccelerator final : public Accelerator {
+public:
+    explicit GridAccelerator(const GridOptions& options) : options_(options) {}
+
+    void build(const PrimitiveSet& primitives) override;
+    Hit intersect(const Ray& ray, TraversalStats& stats) const override;
+    bool occluded(const Ray& ray, TraversalStats& stats) const override;
+    // The grid as a root whose children are its cells, in cellIndex order.
+    StructureView structure() const override;
+    size_t memoryBytes() const override {
+        return (grid_.cellStart.size() + grid_.primIndices.size()) * sizeof(uint32_t);
+    }
+
+    const UniformGrid& grid() const { return grid_; }
+
+private:
+    GridOptions options_;
+    const PrimitiveSet* primitives_ = nullptr;
+    UniformGrid grid_;
+};
+
+}  // namespace rtlab
