@@ -119,7 +119,8 @@ def scratch_copy(source, binary, parent):
     env = dict(os.environ, GIT_AUTHOR_NAME="docs", GIT_AUTHOR_EMAIL="docs@localhost",
                GIT_COMMITTER_NAME="docs", GIT_COMMITTER_EMAIL="docs@localhost")
     for git in (["init", "-q"], ["add", "-A"], ["commit", "-q", "--no-verify", "-m", "scratch copy"]):
-        subprocess.run(["git", *git], cwd=tree, check=True, env=env, stdout=subprocess.DEVNULL)
+        subprocess.run(["git", "-c", "init.defaultBranch=main", "-c", "commit.gpgsign=false", *git], cwd=tree, check=True,
+                       env=env, stdout=subprocess.DEVNULL)
     # build/ is the tree ctest built; a link, which git would list as untracked.
     os.symlink(os.path.realpath(binary), os.path.join(tree, "build"))
     with open(os.path.join(tree, ".git", "info", "exclude"), "a") as f:
