@@ -26,7 +26,9 @@ namespace {
         throw Error(benchmark.string() +
                     " is not built: the benchmarks need Embree (Debian libembree-dev, scripts/install-deps), "
                     "then rebuild");
-    std::vector<std::string> args{benchmark.string()};
+    // argv[0] is what the benchmark's --help and usage lines call it: the command the student
+    // typed ("rtlab bench", "rtlab-solution bench"), not the executable it is run from.
+    std::vector<std::string> args{self.filename().string() + " bench"};
     args.insert(args.end(), arguments.begin(), arguments.end());
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());

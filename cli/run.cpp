@@ -1,7 +1,9 @@
 #include "cli/commands.h"
 #include "framework/core/error.h"
+#include "grader/untrusted_text.h"
 
 #include <iostream>
+#include <string>
 
 namespace rtlab::cli {
 
@@ -19,16 +21,33 @@ int run(int argc, char** argv) {
     addCompareCommand(app);
     addBenchCommand(app);
     addReleaseCommand(app);
+    // CLI11 reports a word that is no subcommand as "A subcommand is required", which hides
+    // the typo: name it and list what there is instead.
+    if (argc > 1 && argv[1][0] != '-') {
+        std::string word = argv[1], names;
+        bool known = false;
+        for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
+            known = known || sub->check_name(word);
+            names += (names.empty() ? "" : ", ") + sub->get_name();
+        }
+        if (!known) {
+            std::cerr << "rtlab: unknown command '" << grader::escapeUntrusted(word, grader::TextLayout::OneLine) << "' (commands: " << names
+                      << "; rtlab --help)\n";
+            return 2;
+        }
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         int code = app.exit(e);  // prints help, version or the usage error
         return code == 0 ? 0 : 2;
     } catch (const NotImplemented& e) {
-        std::cerr << "rtlab: " << e.what() << " (see docs/)\n";
+        std::cerr << "rtlab: " << grader::escapeUntrusted(e.what()) << " (see docs/)\n";
         return 3;
     } catch (const std::exception& e) {
-        std::cerr << "rtlab: " << e.what() << "\n";
+        // Messages quote file names and file contents (a ray file's token, a scene's names):
+        // escaped, so a terminal never obeys bytes that came from a file.
+        std::cerr << "rtlab: " << grader::escapeUntrusted(e.what()) << "\n";
         return 1;
     }
     return 0;

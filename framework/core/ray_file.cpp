@@ -3,6 +3,7 @@
 #include "framework/core/error.h"
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -11,13 +12,20 @@
 namespace rtlab {
 namespace {
 
-// Parses one whitespace-free token as a float; accepts a leading '+', nan and inf.
-bool parseFloat(const std::string& token, float* value) {
+// Parses one whitespace-free token as a float; accepts a leading '+'. Returns the problem, or
+// an empty string: a value beyond float's range (1e40) would silently become inf, and nan would
+// reach the traversal as a ray no test can judge, so both are refused here where the file and
+// line are known. inf is the one non-finite value a ray has: tmax (column 8, the default).
+std::string parseFloat(const std::string& token, bool mayBeInfinite, float* value) {
     const char* first = token.data();
     const char* last = first + token.size();
     if (first != last && *first == '+') ++first;
     auto [end, ec] = std::from_chars(first, last, *value);
-    return ec == std::errc() && end == last;
+    if (ec == std::errc::result_out_of_range && end == last) return "'" + token + "' is out of float range";
+    if (ec != std::errc() || end != last) return "'" + token + "' is not a float";
+    if (std::isnan(*value)) return "'" + token + "' is not a number (nan is not a ray coordinate)";
+    if (std::isinf(*value) && !mayBeInfinite) return "'" + token + "' is infinite (only tmax, the 8th number, may be inf)";
+    return {};
 }
 
 }  // namespace
@@ -33,8 +41,8 @@ std::vector<Ray> readRayFile(const std::string& path) {
         std::vector<float> numbers;
         for (std::string token; tokens >> token;) {
             float value;
-            if (!parseFloat(token, &value))
-                throw Error(path + ":" + std::to_string(lineNumber) + ": '" + token + "' is not a float");
+            std::string problem = parseFloat(token, numbers.size() == 7, &value);
+            if (!problem.empty()) throw Error(path + ":" + std::to_string(lineNumber) + ": " + problem);
             numbers.push_back(value);
         }
         if (numbers.empty()) continue;

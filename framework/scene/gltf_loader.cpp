@@ -24,6 +24,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -722,6 +723,12 @@ Scene loadGltf(const std::string& path) {
     if (!std::filesystem::exists(path, missing)) throw Error(path + ": cannot open the file");
     if (!readWholeFile(path, kMaxFileBytes, &bytes, &problem)) throw Error(path + ": " + problem);
     bool binary = startsWithGlbMagic(bytes);
+    // Without its magic a .glb would be parsed as JSON text and fail with a JSON parser's message
+    // about the first byte; what the student needs to hear is that the file is no GLB at all.
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (extension == ".glb" && !binary)
+        throw Error(path + ": not a binary glTF (.glb) file: it does not start with the bytes 'glTF'");
     checkDocumentLimits(path, bytes, binary);
 
     tinygltf::TinyGLTF parser;
