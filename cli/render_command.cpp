@@ -3,6 +3,7 @@
 #include "framework/accel/accelerator.h"
 #include "cli/accelerator_options.h"
 #include "cli/commands.h"
+#include "cli/render_accelerator.h"
 #include "framework/core/error.h"
 #include "framework/render/image_io.h"
 #include "framework/render/renderer.h"
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
 #include <memory>
 
 namespace rtlab::cli {
@@ -20,7 +22,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kDefaultWidth = 640;
+// The size of the POV-Ray references in scenes/refs (320x240 with the scenes' 4:3 cameras), so
+// a default render can be compared with its reference as it is.
+constexpr int kDefaultWidth = 320;
 constexpr double kDefaultAspect = 4.0 / 3.0;  // when the camera does not give one
 
 struct RenderOptions {
@@ -30,8 +34,10 @@ struct RenderOptions {
     int height = 0;  // 0 = derived
     std::string cameraName;
     AcceleratorSpec accelerator;
+    bool acceleratorGiven = false;  // --accel on the command line
     int threads = 0;
-    bool srgb8 = false;
+    bool srgb8 = false;     // kept for scripts: 8-bit sRGB is the PNG default
+    bool linear16 = false;  // 16-bit linear PNG, the format of the references
     float exposure = 0.0f;
     std::vector<std::string> aovNames;
     std::string aovDir;
@@ -61,15 +67,20 @@ void refuseToOverwriteScene(const std::string& path, const std::string& scenePat
 void render(RenderOptions options) {
     std::vector<Aov> aovs;
     for (const std::string& name : options.aovNames) aovs.push_back(parseAov(name));
-    ImageWriteOptions writeOptions{options.srgb8, options.exposure};
+    if (options.srgb8 && options.linear16) throw Error(options.outputPath + ": --srgb8 and --linear16 exclude each other");
+    // A PNG is for looking at unless --linear16 asks for the references' format; .exr stays linear.
+    std::string outputExtension = fs::path(options.outputPath).extension().string();
+    bool png = outputExtension == ".png" || outputExtension == ".PNG";
+    ImageWriteOptions writeOptions{options.srgb8 || (png && !options.linear16), options.exposure};
     // Fail on bad outputs before the work, not after it.
     checkImageOutput(options.outputPath, writeOptions);
+    if (options.linear16 && !png) throw Error(options.outputPath + ": --linear16 needs a .png file (.exr is always linear)");
     refuseToOverwriteScene(options.outputPath, options.scenePath);
     for (Aov aov : aovs) {
         checkImageOutput(aovPath(options, aov));
         refuseToOverwriteScene(aovPath(options, aov), options.scenePath);
     }
-    auto accelerator = makeAccelerator(options.accelerator);
+    makeAccelerator(options.accelerator);  // an unknown --accel fails here, before the scene is loaded
 
     Scene scene = loadGltf(options.scenePath);
     const Camera& camera = scene.camera(options.cameraName);
@@ -77,7 +88,8 @@ void render(RenderOptions options) {
 
     auto buildStart = std::chrono::steady_clock::now();
     PrimitiveSet primitives(scene);
-    accelerator->build(primitives);
+    std::unique_ptr<Accelerator> accelerator = buildRenderAccelerator(options.accelerator, options.acceleratorGiven, primitives,
+                                                                      makeAccelerator, std::cerr);
     double buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - buildStart).count();
 
     RenderSettings settings;
@@ -117,25 +129,32 @@ void addRenderCommand(CLI::App& app) {
         ->required()
         ->check(CLI::ExistingFile);
     command->add_option("-o,--output", options->outputPath,
-                        "Image to write: .exr (linear float32) or .png (16-bit linear; 8-bit sRGB with --srgb8)")
+                        "Image to write: .exr (linear float32) or .png (8-bit sRGB for viewing; 16-bit linear with --linear16)")
         ->required();
-    command->add_option("--width", options->width, "Image width in pixels (default 640, or from --height and the camera's aspect)")
+    command->add_option("--width", options->width, "Image width in pixels (default 320 as the references, or from --height and the camera's aspect)")
         ->check(CLI::Range(1, 1 << 15));
     command->add_option("--height", options->height, "Image height in pixels (default from the width and the camera's aspect, else 4:3)")
         ->check(CLI::Range(1, 1 << 15));
     command->add_option("--camera", options->cameraName, "Camera by name (default: the first)");
     addAcceleratorOptions(command, options->accelerator, "Accelerator");
+    // Whether --accel was given decides whether an a2 stub may fall back to bvh-median.
+    CLI::Option* accel = command->get_option("--accel");
     command->add_option("--threads", options->threads, "Worker threads (0 = one per hardware thread)")
         ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
-    command->add_flag("--srgb8", options->srgb8, "Write an 8-bit sRGB PNG for viewing instead of 16-bit linear");
-    command->add_option("--exposure", options->exposure, "With --srgb8: multiply by 2^EV before the sRGB curve");
+    command->add_flag("--linear16", options->linear16,
+                      "Write a 16-bit linear PNG, the format of the references rtlab compare and refs read");
+    command->add_flag("--srgb8", options->srgb8, "Write an 8-bit sRGB PNG for viewing (the default for .png)");
+    command->add_option("--exposure", options->exposure, "8-bit sRGB PNG only: multiply by 2^EV before the sRGB curve");
     command->add_option("--aov", options->aovNames, "Also write an AOV: normal, depth, prim or cost (repeatable)")
         ->check(CLI::IsMember({"normal", "depth", "prim", "cost"}))
         ->allow_extra_args(false);  // one name per --aov, so a following SCENE is not taken
     command->add_option("--aov-dir", options->aovDir, "Directory for AOV files OUT.<aov>.<ext> (default: OUT's)")
         ->check(CLI::ExistingDirectory);
-    command->callback([options] { render(*options); });
+    command->callback([options, accel] {
+        options->acceleratorGiven = accel->count() > 0;
+        render(*options);
+    });
 }
 
 }  // namespace rtlab::cli

@@ -120,7 +120,7 @@ TEST_CASE("rtlab render: image and AOV files, sizes from the camera's aspect") {
     fs::path out = outputDir() / "spheres.png";
     fs::path aovDir = outputDir() / "aovs";
     fs::create_directories(aovDir);
-    REQUIRE(runRtlab({"render", kScene, "-o", out.string(), "--width", "64", "--threads", "3", "--aov", "normal",
+    REQUIRE(runRtlab({"render", kScene, "-o", out.string(), "--linear16", "--width", "64", "--threads", "3", "--aov", "normal",
                    "--aov", "cost", "--aov", "depth", "--aov-dir", aovDir.string()}) == 0);
     Image image = readImage(out.string());
     CHECK(image.width == 64);
@@ -142,7 +142,8 @@ TEST_CASE("rtlab render: image and AOV files, sizes from the camera's aspect") {
 TEST_CASE("rtlab render: bad outputs fail before rendering, with exit code 1") {
     CHECK(runRtlab({"render", kScene, "-o", (outputDir() / "missing" / "x.png").string()}) == 1);
     CHECK(runRtlab({"render", kScene, "-o", (outputDir() / "x.tif").string()}) == 1);
-    CHECK(runRtlab({"render", kScene, "-o", (outputDir() / "x.png").string(), "--exposure", "2"}) == 1);
+    CHECK(runRtlab({"render", kScene, "-o", (outputDir() / "x.png").string(), "--linear16", "--exposure", "2"}) == 1);
+    CHECK(runRtlab({"render", kScene, "-o", (outputDir() / "x.exr").string(), "--exposure", "2"}) == 1);
     CHECK(runRtlab({"render", kScene, "-o", (outputDir() / "x.png").string(), "--accel", "kd-magic"}) == 1);
     CHECK(runRtlab({"render", kScene, "-o", (outputDir() / "x.png").string(), "--aov", "albedo"}) == 2);
     CHECK_FALSE(fs::exists(outputDir() / "x.png"));

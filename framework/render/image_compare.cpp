@@ -1,6 +1,7 @@
 #include "framework/render/image_compare.h"
 
 #include "framework/core/error.h"
+#include "framework/render/image_io.h"
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
@@ -21,6 +22,23 @@ OIIO::ImageBuf readBuffer(const std::string& path) {
         throw Error(path + ": cannot read the image: " + message);
     }
     return buffer;
+}
+
+// Two files compared by name: refused with a hint where the numbers would mean nothing, i.e.
+// sizes that differ (usually a render at another size than its reference) or an 8-bit PNG for
+// viewing against a linear image (sRGB codes are not radiance, and 8 bits are 257 16-bit codes).
+void checkComparable(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b, const std::string& pathA, const std::string& pathB) {
+    const OIIO::ImageSpec& sa = a.spec();
+    const OIIO::ImageSpec& sb = b.spec();
+    if (sa.width != sb.width || sa.height != sb.height)
+        throw Error(pathA + " vs " + pathB + ": the images differ in size (" + std::to_string(sa.width) + "x" +
+                    std::to_string(sa.height) + " and " + std::to_string(sb.width) + "x" + std::to_string(sb.height) +
+                    "); render one at the second's size with rtlab render SCENE -o OUT.png --linear16 --width " +
+                    std::to_string(sb.width) + " --height " + std::to_string(sb.height));
+    bool eightA = sa.format == OIIO::TypeDesc::UINT8, eightB = sb.format == OIIO::TypeDesc::UINT8;
+    if (eightA != eightB)
+        throw Error((eightA ? pathA : pathB) + ": an 8-bit image (sRGB, for viewing) cannot be compared with " +
+                    (eightA ? pathB : pathA) + " in 16-bit codes; render with --linear16 (16-bit linear PNG) or to .exr");
 }
 
 // Wraps the pixels without copying; the Image must outlive the buffer.
@@ -110,40 +128,50 @@ ImageComparison compareBuffers(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b,
     return result;
 }
 
-struct HeatBand {
-    double maxCodes;  // the band holds errors up to this many codes
-    float rgb[3];     // sRGB display colour
-};
-// Discrete bands: one glance tells rounding (1-2 codes) from real differences.
-constexpr HeatBand kHeatBands[] = {
-    {1.0, {0.10f, 0.35f, 1.00f}},     // blue: 1 code
-    {2.0, {0.00f, 0.85f, 0.35f}},     // green: 2 codes
-    {15.0, {1.00f, 0.90f, 0.00f}},    // yellow: 3-15
-    {255.0, {1.00f, 0.50f, 0.00f}},   // orange: 16-255
-    {std::numeric_limits<double>::infinity(), {1.00f, 0.00f, 0.00f}},  // red: 256 or more
-};
+constexpr float kEqualGreyScale = 0.35f;  // equal pixels: image A's brightness, dimmed to at most this
+
+// Per pixel, the largest difference of the compared channels after both images are quantised
+// to 16-bit codes as our PNGs and POV-Ray's are: a float render that rounds to its reference's
+// codes is equal here (grey), not 1 code off (blue) everywhere. NaN is the worst error.
+std::vector<double> quantisedCodeErrors(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b, const PixelErrors& errors) {
+    OIIO::ROI roi(0, errors.width, 0, errors.height, 0, 1, 0, errors.channels);
+    std::vector<float> pa(errors.codes.size() * errors.channels), pb(pa.size());
+    if (!a.get_pixels(roi, OIIO::TypeDesc::FLOAT, pa.data()) || !b.get_pixels(roi, OIIO::TypeDesc::FLOAT, pb.data()))
+        throw Error("heat map: cannot read the pixels");
+    std::vector<double> codes(errors.codes.size(), 0.0);
+    for (size_t pixel = 0; pixel < codes.size(); ++pixel)
+        for (int c = 0; c < errors.channels; ++c) {
+            size_t i = pixel * errors.channels + c;
+            double difference = std::isnan(pa[i]) || std::isnan(pb[i])
+                                    ? std::numeric_limits<double>::infinity()
+                                    : std::abs(int(encodeLinear16(pa[i])) - int(encodeLinear16(pb[i])));
+            codes[pixel] = std::max(codes[pixel], difference);
+        }
+    return codes;
+}
 
 void writeHeatMapOf(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b, const std::string& heatMapPath) {
     PixelErrors errors = pixelErrors(a, b, heatMapPath);
+    std::vector<double> codes = quantisedCodeErrors(a, b, errors);
     OIIO::ROI roi(0, errors.width, 0, errors.height, 0, 1, 0, errors.channels);
     std::vector<float> context(errors.codes.size() * errors.channels);
     a.get_pixels(roi, OIIO::TypeDesc::FLOAT, context.data());
 
     OIIO::ImageSpec spec(errors.width, errors.height, 3, OIIO::TypeDesc::UINT8);
     OIIO::ImageBuf heat(spec);
-    std::vector<float> rgb(errors.codes.size() * 3);
-    for (size_t pixel = 0; pixel < errors.codes.size(); ++pixel) {
+    std::vector<float> rgb(codes.size() * 3);
+    for (size_t pixel = 0; pixel < codes.size(); ++pixel) {
         float* out = &rgb[pixel * 3];
-        if (errors.codes[pixel] == 0.0) {
+        if (codes[pixel] == 0.0) {
             // Dim grey from image A, so silhouettes and shadows can be recognised.
             float sum = 0.0f;
             for (int c = 0; c < errors.channels; ++c) sum += context[pixel * errors.channels + c];
-            float grey = 0.35f * std::sqrt(std::clamp(sum / errors.channels, 0.0f, 1.0f));
+            float grey = kEqualGreyScale * std::sqrt(std::clamp(sum / errors.channels, 0.0f, 1.0f));
             out[0] = out[1] = out[2] = grey;
             continue;
         }
-        for (const HeatBand& band : kHeatBands) {
-            if (errors.codes[pixel] <= band.maxCodes) {
+        for (const HeatMapBand& band : errorHeatMapBands()) {
+            if (codes[pixel] <= band.maxCodes) {
                 std::copy(band.rgb, band.rgb + 3, out);
                 break;
             }
@@ -160,7 +188,9 @@ void writeHeatMapOf(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b, const std:
 }  // namespace
 
 ImageComparison compareImages(const std::string& pathA, const std::string& pathB, double thresholdCodes) {
-    return compareBuffers(readBuffer(pathA), readBuffer(pathB), thresholdCodes, pathA + " vs " + pathB);
+    OIIO::ImageBuf a = readBuffer(pathA), b = readBuffer(pathB);
+    checkComparable(a, b, pathA, pathB);
+    return compareBuffers(a, b, thresholdCodes, pathA + " vs " + pathB);
 }
 
 ImageComparison compareImages(const Image& a, const Image& b, double thresholdCodes) {
@@ -168,16 +198,31 @@ ImageComparison compareImages(const Image& a, const Image& b, double thresholdCo
 }
 
 void writeErrorHeatMap(const std::string& pathA, const std::string& pathB, const std::string& heatMapPath) {
-    writeHeatMapOf(readBuffer(pathA), readBuffer(pathB), heatMapPath);
+    OIIO::ImageBuf a = readBuffer(pathA), b = readBuffer(pathB);
+    checkComparable(a, b, pathA, pathB);
+    writeHeatMapOf(a, b, heatMapPath);
 }
 
 void writeErrorHeatMap(const Image& a, const Image& b, const std::string& heatMapPath) {
     writeHeatMapOf(wrapImage(a), wrapImage(b), heatMapPath);
 }
 
+const std::vector<HeatMapBand>& errorHeatMapBands() {
+    // Discrete bands: one glance tells rounding (1-2 codes) from real differences.
+    static const std::vector<HeatMapBand> bands = {
+        {1.0, {0.10f, 0.35f, 1.00f}, "blue", "1 code"},
+        {2.0, {0.00f, 0.85f, 0.35f}, "green", "2 codes"},
+        {15.0, {1.00f, 0.90f, 0.00f}, "yellow", "3-15 codes"},
+        {255.0, {1.00f, 0.50f, 0.00f}, "orange", "16-255 codes"},
+        {std::numeric_limits<double>::infinity(), {1.00f, 0.00f, 0.00f}, "red", "256 codes or more, or NaN"},
+    };
+    return bands;
+}
+
 std::string errorHeatMapLegend() {
-    return "grey = equal (image A, dimmed), blue = 1 code, green = 2 codes, yellow = 3-15, "
-           "orange = 16-255, red = 256 or more";
+    std::string legend = "grey = equal in 16-bit codes (image A, dimmed)";
+    for (const HeatMapBand& band : errorHeatMapBands()) legend += ", " + band.colourName + " = " + band.meaning;
+    return legend;
 }
 
 }  // namespace rtlab

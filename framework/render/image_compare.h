@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace rtlab {
 
@@ -50,15 +51,29 @@ struct ImageComparison {
 };
 
 // Compares two image files (any format OpenImageIO reads). Throws rtlab::Error with one line
-// when a file cannot be read or the sizes differ.
+// when a file cannot be read, the sizes differ (naming the --width/--height that fit the
+// second) or only one of them is 8-bit (an sRGB PNG for viewing; naming --linear16).
 ImageComparison compareImages(const std::string& pathA, const std::string& pathB,
                               double thresholdCodes = 2.0);
 ImageComparison compareImages(const Image& a, const Image& b, double thresholdCodes = 2.0);
 
-// Writes an 8-bit PNG the size of the images: pixels that agree show image A as dim grey,
-// the others are coloured by their error in 16-bit codes (legend: errorHeatMapLegend()).
+// Writes an 8-bit PNG the size of the images. Both images are first quantised to 16-bit codes
+// (encodeLinear16, as our PNGs and POV-Ray's references are), so differences below a code that
+// round alike are equal: those pixels show image A as dim grey, the others are coloured by
+// their error in codes (errorHeatMapBands()). The path variants refuse, with a hint, images of
+// different sizes and an 8-bit image against a 16-bit or float one, as compareImages does.
 void writeErrorHeatMap(const std::string& pathA, const std::string& pathB, const std::string& heatMapPath);
 void writeErrorHeatMap(const Image& a, const Image& b, const std::string& heatMapPath);
+
+// A colour of the heat map and the error it means: errors up to maxCodes (and above the
+// previous band's) in 16-bit codes.
+struct HeatMapBand {
+    double maxCodes;
+    float rgb[3];  // sRGB display colour, 0..1
+    std::string colourName;
+    std::string meaning;
+};
+const std::vector<HeatMapBand>& errorHeatMapBands();
 
 // One line naming the heat map's colours, for reports.
 std::string errorHeatMapLegend();
