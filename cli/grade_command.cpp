@@ -29,6 +29,7 @@ struct GradeFlags {
     double failUnder = -1;  // percent; negative: not asked for
     bool force = false;
     bool quiet = false;
+    bool verbose = false;
 };
 
 struct MergeFlags {
@@ -98,7 +99,7 @@ void merge(const MergeFlags& flags) {
 }
 
 void writeReports(const grader::GradingReport& report, const GradeFlags& flags) {
-    if (!flags.quiet) grader::printTerminalReport(report, std::cout, isatty(STDOUT_FILENO));
+    if (!flags.quiet) grader::printTerminalReport(report, std::cout, isatty(STDOUT_FILENO), flags.verbose);
     if (!flags.json.empty()) grader::writeJsonReport(report, flags.json);
     if (!flags.gradescope.empty()) grader::writeGradescopeResults(report, flags.gradescope);
     if (!flags.junit.empty()) grader::writeJunitReport(report, flags.junit);
@@ -207,6 +208,9 @@ void addGradeCommand(CLI::App& app) {
     cmd->add_flag("--write-reference", flags->grading.writeReference,
                   "Record SAH costs and work per ray into grader/reference/ (run with rtlab-solution)");
     cmd->add_flag("--quiet", flags->quiet, "No table and no progress on the terminal");
+    cmd->add_flag("--verbose", flags->verbose,
+                  "Under each test that is not passing, every failing case: the box or triangle, the ray, "
+                  "what was expected and what came back");
     addMergeCommand(*cmd);
     cmd->callback([flags, cmd] {
         if (cmd->got_subcommand("merge")) return;  // CLI11 runs this after merge's own callback

@@ -23,6 +23,19 @@ std::string formatFloat(double v) {
     return buffer;
 }
 
+std::string describeBox(const Bounds3f& box) {
+    char buffer[200];
+    std::snprintf(buffer, sizeof buffer, "box (%.9g, %.9g, %.9g)-(%.9g, %.9g, %.9g)", box.lower.x, box.lower.y, box.lower.z,
+                  box.upper.x, box.upper.y, box.upper.z);
+    return buffer;
+}
+
+std::string describeSphere(const Vec3& centre, float radius) {
+    char buffer[160];
+    std::snprintf(buffer, sizeof buffer, "sphere centre (%.9g, %.9g, %.9g) radius %.9g", centre.x, centre.y, centre.z, radius);
+    return buffer;
+}
+
 std::string describeTriangle(const std::array<Vec3, 3>& v) {
     char buffer[200];
     std::snprintf(buffer, sizeof buffer, "(%.9g, %.9g, %.9g), (%.9g, %.9g, %.9g), (%.9g, %.9g, %.9g)", v[0].x, v[0].y, v[0].z,
@@ -40,16 +53,17 @@ class CaseTally {
 public:
     explicit CaseTally(TestResult& result) : result_(result) {}
 
-    // An empty problem means the case passed.
-    void record(const std::string& id, const Ray& ray, const std::string& problem) {
+    // An empty problem means the case passed. The detail line names the shape too (what
+    // --verbose and the HTML report show, so a failing case can be reproduced from the line
+    // alone); the reason keeps the shorter id, ray and problem.
+    void record(const std::string& id, const std::string& shape, const Ray& ray, const std::string& problem) {
         ++total_;
         if (problem.empty()) {
             ++passed_;
             return;
         }
-        std::string line = id + " " + describeRay(ray) + ": " + problem;
-        result_.details.push_back(line);
-        if (firstFailure_.empty()) firstFailure_ = line;
+        result_.details.push_back(id + " " + shape + ", ray " + describeRay(ray) + ": " + problem);
+        if (firstFailure_.empty()) firstFailure_ = id + " " + describeRay(ray) + ": " + problem;
     }
 
     void finish() { setFromCounts(result_, passed_, total_, firstFailure_); }
@@ -81,7 +95,7 @@ void scoreBoxTable(const std::vector<BoxCase>& cases, const PhaseOutcome& outcom
         std::string problem;
         if (hit != c.hit) problem = std::string("expected ") + (c.hit ? "hit" : "miss") + ", got " + (hit ? "hit" : "miss");
         else if (hit && !closeTo(enter, c.enter, 1e-5)) problem = "expected tEnter " + formatFloat(c.enter) + ", got " + formatFloat(enter);
-        tally.record(c.id, c.ray, problem);
+        tally.record(c.id, describeBox(c.box), c.ray, problem);
     }
     tally.finish();
 }
@@ -117,7 +131,10 @@ void scoreTriangleTable(const std::vector<TriangleCase>& cases, const PhaseOutco
                 problem = "expected t=" + formatFloat(c.t) + ", got t=" + formatFloat(t) + " on triangle " + std::to_string(k);
         }
         if (c.hit && !anyHit) problem = "expected a hit at t=" + formatFloat(c.t) + ", got a miss";
-        tally.record(c.id, c.ray, problem);
+        std::string shapes;
+        for (size_t k = 0; k < c.triangles.size(); ++k)
+            shapes += (k ? "; " : "") + std::string("triangle ") + std::to_string(k) + " " + describeTriangle(c.triangles[k]);
+        tally.record(c.id, shapes, c.ray, problem);
     }
     tally.finish();
 }
@@ -140,7 +157,7 @@ void scoreSphereTable(const std::vector<SphereCase>& cases, const PhaseOutcome& 
         std::string problem;
         if (hit != c.hit) problem = std::string("expected ") + (c.hit ? "a hit at t=" + formatFloat(c.t) : "a miss") + ", got " + (hit ? "a hit at t=" + formatFloat(t) : "a miss");
         else if (hit && !closeTo(t, c.t, c.tolerance)) problem = "expected t=" + formatFloat(c.t) + ", got t=" + formatFloat(t);
-        tally.record(c.id, c.ray, problem);
+        tally.record(c.id, describeSphere(c.centre, c.radius), c.ray, problem);
     }
     tally.finish();
 }
@@ -238,7 +255,9 @@ TestGroup slabGroup(uint64_t seed) {
                     bool hit = in.get<uint8_t>() != 0;
                     in.get<float>();
                     ++tally.total;
-                    if (!hit && exactSlab(box, ray)) tally.fail("BOX-05 " + describeRay(ray) + ": the ray touches the flat box at z = 5 but was culled");
+                    if (!hit && exactSlab(box, ray))
+                        tally.fail("BOX-05 " + describeBox(box) + ", ray " + describeRay(ray) +
+                                   ": expected a hit (the ray touches the flat box at z = 5), got a miss");
                 }
             tally.into(d, "box tests lost a box the ray touches");
         }
@@ -403,8 +422,10 @@ TestGroup triangleGroup(uint64_t seed) {
                     anyHit |= hit;
                     if (hit && std::abs(t - 1.0f) > 1e-4f) badT = "hit at t=" + formatFloat(t) + ", expected t=1";
                 }
-                if (!anyHit) tally.fail("TRI-03 " + describeRay(c.ray) + ": both triangles sharing the edge were missed");
-                else if (!badT.empty()) tally.fail("TRI-03 " + describeRay(c.ray) + ": " + badT);
+                std::string where = "TRI-03 triangles " + describeTriangle(c.first) + " and " + describeTriangle(c.second) +
+                                    ", ray " + describeRay(c.ray);
+                if (!anyHit) tally.fail(where + ": expected a hit on one of the two triangles sharing the edge, got two misses");
+                else if (!badT.empty()) tally.fail(where + ": " + badT);
             }
             tally.into(r5, "rays through a shared edge leaked");
         }

@@ -40,6 +40,8 @@ GradingReport displaySafe(const GradingReport& report) {
         t.name = line(t.name);
         t.reason = line(t.reason);
         t.visibility = line(t.visibility);
+        t.stub = line(t.stub);
+        t.docs = line(t.docs);
         for (std::string& d : t.details) d = line(d);
         for (ReportImage& image : t.images) image.label = line(image.label);
     }

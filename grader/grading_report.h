@@ -31,7 +31,21 @@ std::string testOutput(const TestResult& test);
 // Scores, images' file paths and timings are unchanged. Every writer below starts with it.
 GradingReport displaySafe(const GradingReport& report);
 
-void printTerminalReport(const GradingReport& report, std::ostream& out, bool colour);
+// The table: one row per test, its reason wrapped at word boundaries under the reason column;
+// with verbose, every detail line of the tests that are not passing (each failing case: the
+// box or triangle, the ray, what was expected and what came back) under their row; last, the
+// "Next:" line naming the first test that is not passing, its stub and docs section.
+void printTerminalReport(const GradingReport& report, std::ostream& out, bool colour, bool verbose = false);
+
+// The terminal report's last line: "Next: TEST — STUB — DOCS" for the first test that is not
+// passing (the stub a not-started reason names, else the rubric guide's), or that all pass.
+std::string nextStepLine(const GradingReport& report);
+
+// Splits text into lines of at most width displayed characters (UTF-8 code points; East Asian
+// wide characters count two, combining marks none), breaking at spaces only; a word longer
+// than width stands alone on its line, whole.
+std::vector<std::string> wrapWords(const std::string& text, size_t width);
+size_t displayWidth(const std::string& text);
 // The JSON report: score, max_score, seed, execution_time, implementation and
 // tests[{name, assignment, status, score, max_score, visibility, output, details, images}].
 void writeJsonReport(const GradingReport& report, const std::string& path);

@@ -77,10 +77,11 @@ TestGroup renderGroup(std::shared_ptr<ImageJob> job, const std::string& workDir)
                 std::string base = workDir + "/" + job->name;
                 writeImage(base + "-render.png", render, ImageWriteOptions{true, 0.0f});
                 writeImage(base + "-reference.png", job->reference, ImageWriteOptions{true, 0.0f});
-                writeErrorHeatMap(render, job->reference, base + "-heatmap.png");
+                writeErrorHeatMap(render, job->reference, base + kHeatMapFileSuffix);
                 result.images = {{"your render", fs::absolute(base + "-render.png").string()},
                                  {"POV-Ray reference", fs::absolute(base + "-reference.png").string()},
-                                 {"difference (" + errorHeatMapLegend() + ")", fs::absolute(base + "-heatmap.png").string()}};
+                                 {"difference in 16-bit codes (colours: " + errorHeatMapLegend() + ")",
+                                  fs::absolute(base + kHeatMapFileSuffix).string()}};
                 std::string summary = percent(c.shareOverThreshold()) + " of pixels off by more than " +
                                       std::to_string(int(kImageThresholdCodes)) + " codes (allowed " + percent(kImageMaxShareOver) +
                                       "); mean error " + std::to_string(c.meanCodes()) + " codes, max " + std::to_string(c.maxCodes()) +

@@ -3,10 +3,12 @@
 // reference and the difference heat map side by side. Self-contained: images are copied
 // next to index.html.
 #include "framework/core/error.h"
+#include "framework/render/image_compare.h"
 #include "grader/grading_report.h"
 #include "grader/markup_escape.h"
 
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -27,8 +29,25 @@ const char* kStyle = R"(body{font-family:sans-serif;margin:2em;max-width:1400px}
 table{border-collapse:collapse}td,th{padding:2px 10px;text-align:left;border-bottom:1px solid #ddd}
 .passed{color:#176b1f}.failed{color:#b00020}.not-started{color:#9a6700}
 pre{background:#f6f6f6;padding:8px;white-space:pre-wrap;font-size:90%}
+.swatch{margin-right:14px;white-space:nowrap}.swatch span{display:inline-block;width:1em;height:1em;margin-right:4px;vertical-align:middle;border:1px solid #888}
 .images{display:flex;gap:12px;flex-wrap:wrap}.images figure{margin:0}.images img{max-width:440px;image-rendering:pixelated}
 )";
+
+// The heat map's colours as swatches with the error each means (framework/render/image_compare.h).
+std::string heatMapLegend() {
+    auto swatch = [](const float rgb[3], const std::string& meaning) {
+        char colour[8];
+        std::snprintf(colour, sizeof colour, "#%02x%02x%02x", int(std::lround(rgb[0] * 255)), int(std::lround(rgb[1] * 255)),
+                      int(std::lround(rgb[2] * 255)));
+        return std::string("<span class=\"swatch\"><span style=\"background:") + colour + "\"></span>" + escapeMarkup(meaning) +
+               "</span>";
+    };
+    const float grey[3] = {0.25f, 0.25f, 0.25f};
+    std::string legend = "<p class=\"legend\">Difference, after both images are quantised to 16-bit codes: " +
+                         swatch(grey, "equal (your render, dimmed)");
+    for (const HeatMapBand& band : errorHeatMapBands()) legend += swatch(band.rgb, band.colourName + ": " + band.meaning);
+    return legend + "</p>\n";
+}
 
 }  // namespace
 
@@ -54,7 +73,9 @@ void writeHtmlReport(const GradingReport& untrusted, const std::string& director
         std::string status = testStatusName(t.status);
         html << "<h2 id=\"" << anchor(t.name) << "\">" << escapeMarkup(t.name) << " <span class=\"" << anchor(status) << "\">" << status
              << "</span></h2>\n";
-        std::string output = testOutput(t);
+        // The reason is in the table above; here the lines behind it, so it is shown once.
+        std::string output;
+        for (const std::string& line : t.details) output += (output.empty() ? "" : "\n") + line;
         if (!output.empty()) html << "<pre>" << escapeMarkup(output) << "</pre>\n";
         if (t.images.empty()) continue;
         html << "<div class=\"images\">\n";
@@ -66,6 +87,9 @@ void writeHtmlReport(const GradingReport& untrusted, const std::string& director
                  << escapeMarkup(image.label) << "</figcaption></figure>\n";
         }
         html << "</div>\n";
+        bool heatMap = false;
+        for (const ReportImage& image : t.images) heatMap = heatMap || image.path.ends_with(kHeatMapFileSuffix);
+        if (heatMap) html << heatMapLegend();
     }
     if (!report.studentOutput.empty())
         html << "<h2>What your code printed</h2>\n<pre>" << escapeMarkup(report.studentOutput) << "</pre>\n";

@@ -56,6 +56,8 @@ Rubric Rubric::load(const std::string& path) {
             if (!(r.points >= 0)) throw Error(path + ": rule " + asJsonString(r.pattern) + " has negative points");
             rubric.rules_.push_back(r);
         }
+        for (const auto& guide : json.value("guides", nlohmann::json::array()))
+            rubric.guides_.push_back({guide.at("match").get<std::string>(), guide.value("stub", ""), guide.value("docs", "")});
         if (json.contains("precision")) {
             const auto& precision = json.at("precision");
             // Compared as a 64-bit number: get<int>() would read 4294967298 as 2.
@@ -79,6 +81,12 @@ void Rubric::apply(std::vector<TestResult>& results) const {
                 break;
             }
         result.score = round(result.maxScore * result.fraction);
+        for (const RubricGuide& guide : guides_)
+            if (globMatches(guide.pattern, result.name)) {
+                result.stub = guide.stub;
+                result.docs = guide.docs;
+                break;
+            }
     }
 }
 

@@ -16,13 +16,22 @@ struct RubricRule {
     std::string visibility = "visible";  // Gradescope: visible, hidden, after_due_date, after_published
 };
 
+// Where a student works on a test and reads about it: the "guides" of the rubric file, matched
+// like rules (first match). The terminal report's "Next:" line names them.
+struct RubricGuide {
+    std::string pattern;
+    std::string stub;  // "assignments/a0_intersect/ray_box.cpp"
+    std::string docs;  // "docs/a0-intersect.md#slab-test"
+};
+
 class Rubric {
 public:
     // Throws rtlab::Error naming the file and the problem for a malformed rubric.
     static Rubric load(const std::string& path);
 
     // Sets maxScore, score (fraction x points, rounded to precision()) and visibility of every
-    // result. A test no rule matches is worth 0 points (and is still reported).
+    // result, and its stub and docs from the first guide that matches. A test no rule matches
+    // is worth 0 points (and is still reported).
     void apply(std::vector<TestResult>& results) const;
 
     // The results for exactly the tests the grader defines, in its order, with the rubric
@@ -38,6 +47,7 @@ public:
 
 private:
     std::vector<RubricRule> rules_;
+    std::vector<RubricGuide> guides_;
     int precision_ = 2;
 };
 

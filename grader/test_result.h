@@ -31,7 +31,13 @@ struct TestResult {
     double maxScore = 0.0;
     double score = 0.0;
     std::string visibility = "visible";
+    std::string stub;  // the file to work on, from the rubric's guides (may be empty)
+    std::string docs;  // the docs section about it, "docs/a0-intersect.md#slab-test"
 };
+
+// The file name ending of the heat maps image tests write; the HTML report puts the colour
+// legend under them (the suffix survives a report's JSON round trip, a flag would not).
+inline constexpr const char* kHeatMapFileSuffix = "-heatmap.png";
 
 // Passed when every case passed; otherwise failed with partial credit passed/total.
 void setFromCounts(TestResult& result, size_t passed, size_t total, const std::string& firstFailure);
