@@ -1,6 +1,7 @@
 #include "cli/render_accelerator.h"
 
 #include "framework/core/error.h"
+#include "grader/untrusted_text.h"
 
 namespace rtlab::cli {
 
@@ -14,7 +15,10 @@ std::unique_ptr<Accelerator> buildRenderAccelerator(AcceleratorSpec& spec, bool 
         // Only an a2 stub has a way round it: the a1 builders and traversal are what the
         // fallback uses itself, and a0 is under every accelerator.
         if (specGiven || spec.name == kRenderFallbackAccelerator || e.stub.rfind("a2 ", 0) != 0) throw;
-        notes << "rtlab: the default accelerator " << spec.name << " needs " << e.stub
+        // The stub's name comes from the student's build of the stubs: escaped like every
+        // other message (grader/untrusted_text.h).
+        notes << "rtlab: the default accelerator " << spec.name << " needs "
+              << grader::escapeUntrusted(e.stub, grader::TextLayout::OneLine)
               << ", not implemented yet; rendering with --accel " << kRenderFallbackAccelerator
               << " (a1) instead\n";
     }

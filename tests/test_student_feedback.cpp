@@ -274,6 +274,17 @@ TEST_CASE("render's accelerator: the default falls back to bvh-median from an a2
     CHECK(notes.str().find("--accel bvh-median") != std::string::npos);
     CHECK(notes.str().find("sah_buckets.cpp") != std::string::npos);
 
+    // The stub's name is the student's build's: escaped on its way to the terminal.
+    cli::AcceleratorFactory hostile = [&](const AcceleratorSpec& spec) -> std::unique_ptr<Accelerator> {
+        if (spec.name == "bvh-buckets") return std::make_unique<StubAccelerator>("a2 \x1b[2Jsplit\nSahBuckets");
+        return makeAccelerator(spec);
+    };
+    AcceleratorSpec again;
+    std::ostringstream escaped;
+    cli::buildRenderAccelerator(again, false, primitives, hostile, escaped);
+    CHECK(escaped.str().find('\x1b') == std::string::npos);
+    CHECK(linesOf(escaped.str()).size() == 1);
+
     // Asked for by name, or stopped in a1: no way round, the stub's error stands.
     AcceleratorSpec asked;
     CHECK_THROWS_AS(cli::buildRenderAccelerator(asked, true, primitives, studentWithoutA2, notes), NotImplemented);
