@@ -4,6 +4,7 @@
 // `rtlab grade merge` joins per-student reports into the CSV.
 #include "cli/commands.h"
 #include "framework/core/error.h"
+#include "grader/assignment_registry.h"
 #include "grader/batch_grading.h"
 #include "grader/grades_csv.h"
 #include "grader/grading_session.h"
@@ -116,7 +117,7 @@ void grade(GradeFlags& flags) {
     if (!fs::is_directory(g.sourceDir + "/grader"))
         throw Error("--root " + g.sourceDir + " is not the rtlab repository (no grader/ folder)");
     for (const std::string& a : g.assignments)
-        if (a != "a0" && a != "a1" && a != "a2") throw Error("--assignment " + a + " is not an assignment (valid: a0, a1, a2)");
+        if (!grader::findAssignment(a)) throw Error("--assignment " + a + " is not an assignment (valid: " + grader::assignmentIds() + ")");
     // Renders and heat maps go to a temporary folder unless --work names one; the HTML report
     // keeps copies.
     bool temporaryWork = g.workDir.empty();
@@ -172,7 +173,7 @@ void addGradeCommand(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("grade", "Grade the assignments: unit truth tables, hit sets against the oracle, "
                                                 "BVH structure and SAH cost, images against POV-Ray (docs/grading.md)");
     cmd->add_option("--seed", flags->grading.seed, "Seed of the random ray sets and property tests")->capture_default_str();
-    cmd->add_option("--assignment", flags->grading.assignments, "Grade only these assignments (a0, a1, a2); repeatable");
+    cmd->add_option("--assignment", flags->grading.assignments, "Grade only these assignments (" + grader::assignmentIds() + "); repeatable");
     cmd->add_option("--json", flags->json, "Write the JSON report to FILE");
     cmd->add_option("--gradescope", flags->gradescope, "Write Gradescope's results.json to FILE");
     cmd->add_option("--junit", flags->junit, "Write a JUnit XML report to FILE");

@@ -11,6 +11,7 @@ namespace rtlab::grader {
 std::vector<TestGroup> a0Groups(GradingContext& context);      // a0_tests.cpp
 std::vector<TestGroup> a1Groups(GradingContext& context);      // a1_tests.cpp
 std::vector<TestGroup> a2Groups(GradingContext& context);      // a2_tests.cpp
+std::vector<TestGroup> a3Groups(GradingContext& context);      // a3_tests.cpp
 std::vector<TestGroup> imageGroups(GradingContext& context);   // image_tests.cpp
 
 // The stubs named in verdicts ("crashed with SIGSEGV in <stub>").

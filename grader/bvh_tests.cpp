@@ -1,6 +1,5 @@
 #include "grader/bvh_tests.h"
 
-#include "framework/oracle/oracle.h"
 #include "grader/bvh_structure.h"
 #include "grader/scene_codec.h"
 #include "grader/worker/task_inputs.h"
@@ -9,7 +8,6 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <time.h>
 
 namespace rtlab::grader {
 namespace {
@@ -17,13 +15,6 @@ namespace {
 constexpr const char* kStubOrdered = "a1 intersectBvh (assignments/a1_bvh/bvh_traverse.cpp)";
 constexpr const char* kStubRecursive = "a1 intersectBvhRecursive (assignments/a1_bvh/bvh_traverse.cpp)";
 constexpr const char* kStubOccluded = "a1 occludedBvh (assignments/a1_bvh/bvh_traverse.cpp)";
-constexpr int kRaysPerScene = 1000;
-
-std::string formatNumber(double v) {
-    char buffer[48];
-    std::snprintf(buffer, sizeof buffer, "%.10g", v);
-    return buffer;
-}
 
 using worker::RawQuery;
 
@@ -62,138 +53,6 @@ std::optional<Bvh> readBvh(const PhaseOutcome& outcome, size_t primCount, std::s
     }
 }
 
-std::optional<std::vector<RawQuery>> readQueries(const PhaseOutcome& outcome, size_t count, TestResult& result) {
-    if (failedPhaseResult(outcome, result)) return std::nullopt;
-    try {
-        ByteReader in(outcome.data);
-        auto answers = in.getVector<RawQuery>(count);
-        if (answers.size() != count) throw WireError("wrong number of answers");
-        return answers;
-    } catch (const WireError& e) {
-        result.status = TestStatus::Failed;
-        result.reason = std::string("sent malformed results: ") + e.what();
-        return std::nullopt;
-    }
-}
-
-void pass(TestResult& result, const std::string& detail) {
-    result.status = TestStatus::Passed;
-    result.fraction = 1.0;
-    result.reason.clear();
-    if (!detail.empty()) result.details.push_back(detail);
-}
-
-void fail(TestResult& result, const std::string& reason) {
-    result.status = TestStatus::Failed;
-    result.fraction = 0.0;
-    result.reason = reason;
-}
-
-double meanWork(const std::vector<RawQuery>& answers) {
-    double sum = 0.0;
-    for (const RawQuery& a : answers) sum += double(a.nodeVisits) + a.primitiveTests;
-    return answers.empty() ? 0.0 : sum / double(answers.size());
-}
-
-// Judges closest-hit answers ray by ray; fills result, returns the number of wrong rays.
-size_t judgeClosestHits(PreparedScene& scene, const std::vector<RawQuery>& answers, TestResult& result, const std::string& tag) {
-    size_t wrong = 0;
-    std::string first;
-    for (size_t i = 0; i < answers.size(); ++i) {
-        const Ray& ray = scene.rays.rays[i];
-        std::string problem = scene.judge->judgeClosest(i, ray, scene.rays.mustHit[i], HitAnswer{answers[i].prim, answers[i].t});
-        if (problem.empty()) continue;
-        std::string line = tag + "ray " + std::to_string(i) + " (" + rayKindName(scene.rays.kinds[i]) + ") " + describeRay(ray) + ": " + problem;
-        if (wrong++ < 5) result.details.push_back(line);
-        if (first.empty()) first = line;
-    }
-    if (wrong == 0) pass(result, tag + std::to_string(answers.size()) + " rays, all right");
-    else fail(result, std::to_string(wrong) + " of " + std::to_string(answers.size()) + " rays wrong; first: " + first);
-    return wrong;
-}
-
-size_t judgeOcclusion(PreparedScene& scene, const std::vector<RawQuery>& answers, TestResult& result, const std::string& tag) {
-    size_t wrong = 0;
-    std::string first;
-    for (size_t i = 0; i < answers.size(); ++i) {
-        const Ray& ray = scene.anyHitRays[i];
-        std::string problem = scene.anyHitJudge->judgeOccluded(i, ray, false, answers[i].prim != 0);
-        if (problem.empty()) continue;
-        std::string line = tag + "ray " + std::to_string(i) + " (" + rayKindName(scene.rays.kinds[i]) + ") " + describeRay(ray) + ": " + problem;
-        if (wrong++ < 5) result.details.push_back(line);
-        if (first.empty()) first = line;
-    }
-    if (wrong == 0) pass(result, tag + std::to_string(answers.size()) + " any-hit rays, all right");
-    else fail(result, std::to_string(wrong) + " of " + std::to_string(answers.size()) + " any-hit rays wrong; first: " + first);
-    return wrong;
-}
-
-std::string formatMilliseconds(double seconds) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.3g ms", 1e3 * seconds);
-    return buffer;
-}
-
-// What a brute force costs per ray on this scene, on this machine, now: the oracle's closest
-// hit over every primitive, timed on the grader's own thread.
-double bruteForceSecondsPerRay(const PreparedScene& scene) {
-    Oracle oracle(scene.test.scene);
-    size_t count = std::min<size_t>(kTimedOracleRays, scene.rays.rays.size());
-    timespec start{}, end{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &start);
-    for (size_t i = 0; i < count; ++i) oracle.closestHit(OracleRay::from(scene.rays.rays[i]));
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &end);
-    double elapsed = double(end.tv_sec - start.tv_sec) + 1e-9 * double(end.tv_nsec - start.tv_nsec);
-    return count ? elapsed / double(count) : 0.0;
-}
-
-// The efficiency verdict (docs/grading.md, "Efficiency"): the CPU time the kernel counted for
-// the worker while it ran the traversals, against a brute force over the same scene timed by
-// the grader in the same run. The framework's counters are shown too, but live in the worker,
-// so they are feedback, not evidence.
-void judgeEfficiency(const PreparedScene& scene, const SandboxRun& run, size_t firstQuery, size_t queries, TestResult& efficiency,
-                     const std::string& tag) {
-    double cpu = 0.0;
-    size_t phases = 0;
-    for (size_t k = firstQuery; k < run.phases.size(); ++k, ++phases) cpu += run.phases[k].cpuSeconds;
-    double brute = double(queries) * scene.bruteForceSecondsPerRay;
-    double allowed = kBruteForceShare * brute + kPhaseSlackSeconds * double(phases);
-    std::string line = tag + "traversal CPU time " + formatMilliseconds(cpu) + " for " + std::to_string(queries) +
-                       " queries (counted by the kernel); a brute force over the " + std::to_string(scene.primBounds.size()) +
-                       " primitives takes about " + formatMilliseconds(brute) + " here; allowed " + formatMilliseconds(allowed);
-    if (cpu <= allowed) pass(efficiency, line);
-    else {
-        efficiency.details.push_back(line);
-        fail(efficiency, "the traversal is about as slow as a brute force: " + line);
-    }
-}
-
-std::shared_ptr<PreparedScene> prepare(TestScene test, uint64_t seed) {
-    auto scene = std::make_shared<PreparedScene>();
-    scene->test = std::move(test);
-    const Scene& s = scene->test.scene;
-    for (uint32_t i = 0; i < s.primitiveCount(); ++i) scene->primBounds.push_back(s.primitiveBounds(i));
-    scene->rays = makeRaySet(scene->test, kRaysPerScene, seed);
-    scene->anyHitRays = withRandomTMax(scene->rays.rays, s, seed);
-    scene->sha256 = sceneGeometrySha256(s);
-    scene->judge = std::make_unique<HitJudge>(s, scene->rays.rays.size());
-    scene->anyHitJudge = std::make_unique<HitJudge>(s, scene->anyHitRays.size());
-    return scene;
-}
-
-const PreparedScenes& hitSetScenes(GradingContext& context) {
-    if (!context.scenes) {
-        context.scenes = std::make_shared<PreparedScenes>();
-        for (TestScene& test : grader::hitSetScenes(context.modelsDir))
-            context.scenes->list.push_back(prepare(std::move(test), context.seed));
-        // Efficiency is judged where a brute force is far slower than any tree: the largest scene.
-        auto largest = std::max_element(context.scenes->list.begin(), context.scenes->list.end(),
-                                        [](const auto& a, const auto& b) { return a->primBounds.size() < b->primBounds.size(); });
-        if (largest != context.scenes->list.end()) (*largest)->bruteForceSecondsPerRay = bruteForceSecondsPerRay(**largest);
-    }
-    return *context.scenes;
-}
-
 TestGroup hitSetGroup(const BvhConfig& config, std::shared_ptr<PreparedScene> scene, GradingContext& context) {
     TestGroup group;
     group.assignment = config.assignment;
@@ -219,16 +78,16 @@ TestGroup hitSetGroup(const BvhConfig& config, std::shared_ptr<PreparedScene> sc
             std::string problem;
             bvh = readBvh(run.phases[0], scene->primBounds.size(), &problem);
             if (!bvh) {
-                fail(structure, problem);
+                markFailed(structure, problem);
             } else {
                 BvhStructureReport report = checkBvhStructure(*bvh, scene->primBounds, true);
                 structureValid = report.problems.empty();
                 for (const std::string& p : report.problems) structure.details.push_back(tag + p);
                 if (structureValid)
-                    pass(structure, tag + std::to_string(bvh->nodes.size()) + " nodes, " + std::to_string(report.leaves) +
+                    markPassed(structure, tag + std::to_string(bvh->nodes.size()) + " nodes, " + std::to_string(report.leaves) +
                                         " leaves, depth " + std::to_string(report.depth));
                 else
-                    fail(structure, std::to_string(report.problemCount) + " problems; first: " + report.problems.front());
+                    markFailed(structure, std::to_string(report.problemCount) + " problems; first: " + report.problems.front());
             }
         }
         sah.status = structure.status == TestStatus::NotStarted ? TestStatus::NotStarted : TestStatus::Failed;
@@ -252,23 +111,23 @@ TestGroup hitSetGroup(const BvhConfig& config, std::shared_ptr<PreparedScene> sc
             if (reference.writing()) {
                 if (wrongHits == 0 && ordered && occluded) {
                     reference.record(key, BvhReference{scene->sha256, cost, meanWork(*ordered), meanWork(*occluded)});
-                    pass(sah, tag + "SAH cost " + formatNumber(cost) + " recorded as the reference");
+                    markPassed(sah, tag + "SAH cost " + formatNumber(cost) + " recorded as the reference");
                 } else {
-                    fail(sah, "not recorded: this implementation fails its own hit-set tests");
+                    markFailed(sah, "not recorded: this implementation fails its own hit-set tests");
                 }
             } else {
                 std::string whyNot;
                 auto ref = reference.find(key, scene->sha256, &whyNot);
                 if (!ref) {
-                    fail(sah, whyNot);
+                    markFailed(sah, whyNot);
                 } else {
                     double tolerance = config.exactSah ? 1e-12 : kSahTolerance;
                     std::string line = tag + "SAH cost " + formatNumber(cost) + ", reference " + formatNumber(ref->sahCost) +
                                        " (" + (config.exactSah ? "must match exactly" : "within 1e-4 relative") + ")";
-                    if (std::abs(cost - ref->sahCost) <= tolerance * ref->sahCost) pass(sah, line);
+                    if (std::abs(cost - ref->sahCost) <= tolerance * ref->sahCost) markPassed(sah, line);
                     else {
                         sah.details.push_back(line);
-                        fail(sah, line);
+                        markFailed(sah, line);
                     }
                     if (ordered && occluded)
                         efficiency.details.push_back(tag + "framework counters (feedback, not evidence): node visits + primitive tests per ray: closest " +
@@ -281,12 +140,12 @@ TestGroup hitSetGroup(const BvhConfig& config, std::shared_ptr<PreparedScene> sc
                 size_t queries = scene->rays.rays.size() * (config.recursive ? 2 : 1) + scene->anyHitRays.size();
                 judgeEfficiency(*scene, run, 1, queries, efficiency, tag);
             } else {
-                fail(efficiency, "the traversal must return the right hits before its speed counts: " +
+                markFailed(efficiency, "the traversal must return the right hits before its speed counts: " +
                                      (!ordered ? closest.reason : !occluded ? anyHit.reason : "some hits are wrong"));
             }
         } else if (structure.status != TestStatus::NotStarted && bvh) {
-            fail(sah, "the structure is invalid, so its SAH cost means nothing");
-            fail(efficiency, sah.reason);
+            markFailed(sah, "the structure is invalid, so its SAH cost means nothing");
+            markFailed(efficiency, sah.reason);
         }
         bool timed = scene->bruteForceSecondsPerRay > 0.0;
         for (TestResult* r : {&structure, &sah, &closest, &recursive, &anyHit, &efficiency})
@@ -435,8 +294,8 @@ TestGroup stressGroup(const BvhConfig& config, std::shared_ptr<StressScene> stre
             problems.push_back(describeRay(r.ray) + ": expected " + expected + ", got " + got);
         }
         for (const std::string& p : problems) result.details.push_back(tag + p);
-        if (problems.empty()) pass(result, tag + "built and answered correctly");
-        else fail(result, tag + problems.front());
+        if (problems.empty()) markPassed(result, tag + "built and answered correctly");
+        else markFailed(result, tag + problems.front());
         results.push_back(std::move(result));
     };
     return group;

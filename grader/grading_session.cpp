@@ -1,7 +1,7 @@
 #include "grader/grading_session.h"
 
 #include "framework/core/error.h"
-#include "grader/assignment_tests.h"
+#include "grader/assignment_registry.h"
 #include "grader/rubric.h"
 
 #include <algorithm>
@@ -76,12 +76,8 @@ GradingReport gradeWorker(const GradingOptions& options) {
         for (TestGroup& g : more)
             if (wanted(g.assignment)) groups.push_back(std::move(g));
     };
-    if (wanted("a0")) add(a0Groups(context));
-    if (wanted("a1")) {
-        add(a1Groups(context));
-        add(imageGroups(context));
-    }
-    if (wanted("a2")) add(a2Groups(context));
+    for (const Assignment& assignment : assignments())
+        if (wanted(assignment.id)) add(assignment.groups(context));
 
     GradingReport report;
     report.implementation = options.implementation;

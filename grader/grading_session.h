@@ -19,7 +19,7 @@ struct GradingOptions {
     std::string modelsDir;   // bunny.gltf
     std::string workDir;     // renders and heat maps
     std::string rubricPath;  // default sourceDir/grader/rubric.json
-    std::vector<std::string> assignments;  // empty: all of a0, a1, a2
+    std::vector<std::string> assignments;  // empty: every registered one (assignment_registry.h)
     std::string workerPath;  // the worker executable holding the code to grade (grader/worker/)
     std::string unavailableWorker;  // when set, no worker runs and every phase fails with this reason
     SandboxLimits limits;

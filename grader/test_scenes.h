@@ -45,6 +45,10 @@ TestScene cornellBox();
 // modelsDir/bunny.gltf when it exists and loads; otherwise a bumpy closed sphere, with a note.
 TestScene bunnyOrStandIn(const std::string& modelsDir);
 
+// The "teapot in a stadium" (Haines): the bunny (or its stand-in) scaled to size 1 at the origin
+// inside a closed box of side 200, where one resolution for the whole scene fails a grid.
+TestScene teapotInAStadium(const std::string& modelsDir);
+
 // The three procedural scenes and the bunny (or its stand-in).
 std::vector<TestScene> hitSetScenes(const std::string& modelsDir);
 

@@ -6,7 +6,9 @@
 #include "framework/core/bounds.h"
 #include "framework/core/ray.h"
 #include "framework/interface/bvh.h"
+#include "framework/interface/grid.h"
 
+#include <array>
 #include <cstdint>
 #include <type_traits>
 
@@ -22,6 +24,14 @@ inline constexpr const char* kTaskSplit = "split";              // SplitCall... 
 inline constexpr const char* kTaskBvhBuild = "bvh-build";       // scene, BvhOptions -> [BvhNode], [u32]
 inline constexpr const char* kTaskBvhQuery = "bvh-query";       // u8 BvhQuery, [Ray] -> [RawQuery]
 inline constexpr const char* kTaskRender = "render";            // scene, RenderRequest -> w, h, c, [f32]
+inline constexpr const char* kTaskGridResolution = "grid-resolution";  // [ResolutionCall] -> per call i32[3]
+inline constexpr const char* kTaskGridCell = "grid-cell";       // GridFrame, [Vec3] -> per point i32[3]
+inline constexpr const char* kTaskGridRange = "grid-range";     // GridFrame, [Bounds3f] -> per box i32[6]
+inline constexpr const char* kTaskDdaSetup = "dda-setup";       // GridFrame, [DdaSetupCall] -> [DdaState]
+inline constexpr const char* kTaskDdaStep = "dda-step";         // [DdaStepCall] -> per call u8, DdaState
+inline constexpr const char* kTaskDdaWalk = "dda-walk";         // GridFrame, [DdaSetupCall] -> per walk u32 n, i32[3] x n
+inline constexpr const char* kTaskGridBuild = "grid-build";     // scene, GridOptions -> GridFrame, [u32], [u32]
+inline constexpr const char* kTaskGridQuery = "grid-query";     // u8 GridQuery, [Ray] -> [RawQuery]
 
 struct BoxQuery {
     Bounds3f box;
@@ -58,6 +68,35 @@ struct RawQuery {
     uint32_t primitiveTests;
 };
 
+// The frame of a uniform grid without its cells (UniformGrid holds vectors).
+struct GridFrame {
+    Bounds3f bounds;
+    std::array<int32_t, 3> resolution;
+    Vec3 cellWidth;
+    Vec3 inverseWidth;
+};
+
+struct ResolutionCall {
+    Bounds3f bounds;
+    uint64_t primCount;
+    GridOptions options;
+};
+
+struct DdaSetupCall {
+    Ray ray;
+    float tEnter, tExit;
+};
+
+struct DdaStepCall {
+    DdaState state;
+    std::array<int32_t, 3> resolution;
+};
+
+// The longest walk dda-walk reports: more cells than any graded grid has along a ray.
+inline constexpr uint32_t kMaxWalkCells = 4096;
+
+enum class GridQuery : uint8_t { Closest, Occluded };
+
 struct RenderRequest {
     uint32_t camera;  // index into the scene's cameras
     int32_t width, height;
@@ -66,6 +105,8 @@ struct RenderRequest {
 
 static_assert(std::is_trivially_copyable_v<BoxQuery> && std::is_trivially_copyable_v<TriangleQuery> &&
               std::is_trivially_copyable_v<SphereQuery> && std::is_trivially_copyable_v<SplitCall> &&
-              std::is_trivially_copyable_v<RawQuery> && std::is_trivially_copyable_v<RenderRequest>);
+              std::is_trivially_copyable_v<RawQuery> && std::is_trivially_copyable_v<RenderRequest> &&
+              std::is_trivially_copyable_v<GridFrame> && std::is_trivially_copyable_v<ResolutionCall> &&
+              std::is_trivially_copyable_v<DdaSetupCall> && std::is_trivially_copyable_v<DdaStepCall>);
 
 }  // namespace rtlab::grader::worker

@@ -24,6 +24,14 @@ constexpr std::array kTasks = {
     NamedTask{kTaskBvhBuild, runBvhBuild},
     NamedTask{kTaskBvhQuery, runBvhQuery},
     NamedTask{kTaskRender, runRender},
+    NamedTask{kTaskGridResolution, runGridResolution},
+    NamedTask{kTaskGridCell, runGridCell},
+    NamedTask{kTaskGridRange, runGridRange},
+    NamedTask{kTaskDdaSetup, runDdaSetup},
+    NamedTask{kTaskDdaStep, runDdaStep},
+    NamedTask{kTaskDdaWalk, runDdaWalk},
+    NamedTask{kTaskGridBuild, runGridBuild},
+    NamedTask{kTaskGridQuery, runGridQuery},
 };
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include "framework/accel/primitive_set.h"
 #include "framework/interface/bvh.h"
+#include "framework/interface/grid.h"
 #include "framework/scene/scene.h"
 #include "grader/wire_format.h"
 
@@ -17,6 +18,7 @@ struct WorkerState {
     Scene scene;
     std::unique_ptr<PrimitiveSet> primitives;
     Bvh bvh;
+    UniformGrid grid;
 };
 
 using Task = void (*)(ByteReader& input, ByteWriter& output, WorkerState& state);
@@ -33,6 +35,15 @@ void runSphereQueries(ByteReader& input, ByteWriter& output, WorkerState& state)
 void runSplitCalls(ByteReader& input, ByteWriter& output, WorkerState& state);
 void runBvhBuild(ByteReader& input, ByteWriter& output, WorkerState& state);
 void runBvhQuery(ByteReader& input, ByteWriter& output, WorkerState& state);
+// grid_tasks.cpp
+void runGridResolution(ByteReader& input, ByteWriter& output, WorkerState& state);
+void runGridCell(ByteReader& input, ByteWriter& output, WorkerState& state);
+void runGridRange(ByteReader& input, ByteWriter& output, WorkerState& state);
+void runDdaSetup(ByteReader& input, ByteWriter& output, WorkerState& state);
+void runDdaStep(ByteReader& input, ByteWriter& output, WorkerState& state);
+void runDdaWalk(ByteReader& input, ByteWriter& output, WorkerState& state);
+void runGridBuild(ByteReader& input, ByteWriter& output, WorkerState& state);
+void runGridQuery(ByteReader& input, ByteWriter& output, WorkerState& state);
 // render_task.cpp
 void runRender(ByteReader& input, ByteWriter& output, WorkerState& state);
 
