@@ -3,8 +3,8 @@
 
 Checks, in the Markdown files tracked by git (README.md, docs/*.md, fuzz/README.md, ...):
 
-* every Markdown link and image, inline `[text](target)` or a reference definition
-  `[id]: target`, whose target is not a URL: the file exists and is tracked by git (so it ships;
+* every Markdown link and image, inline `[text](target)`, a reference definition
+  `[id]: target` or an HTML `<a href>` / `<img src>`, whose target is not a URL: the file exists and is tracked by git (so it ships;
   a folder counts when it holds tracked files), it lies inside the repository, and its `#anchor`
   is the GitHub slug of one of the target's headings (or an explicit `<a id="...">`);
 * every `name.md` or `folder/name.md#anchor` written in the text (prose or inline code,
@@ -39,6 +39,7 @@ FENCE = re.compile(r"^\s{0,3}(`{3,}|~{3,})")
 HEADING = re.compile(r"^\s{0,3}(#{1,6})\s+(.*?)\s*#*\s*$")
 HTML_ANCHOR = re.compile(r"<a\s+(?:[^>]*\s)?(?:id|name)=\"([^\"]+)\"", re.IGNORECASE)
 INLINE_LINK = re.compile(r"!?\[(?:[^\]\\]|\\.)*\]\(\s*<?([^)\s>]*)>?(?:\s+\"[^\"]*\")?\s*\)")
+HTML_LINK = re.compile(r"<(?:a|img)\s[^>]*?(?:href|src)=\"([^\"]+)\"", re.IGNORECASE)
 REFERENCE_DEF = re.compile(r"^\s{0,3}\[[^\]]+\]:\s*<?(\S+?)>?(?:\s|$)")
 MD_MENTION = re.compile(r"(?<![\w/.\-])((?:\.\./|\./|[\w.\-]+/)*[\w.\-]+\.md)(#[\w\-]+)?(?![\w/])")
 DOCS_MENTION = re.compile(r"(?<![\w/.\-])(docs/[\w.\-]+\.md)(#[\w\-]+)?")
@@ -179,7 +180,7 @@ class Checker:
         for number, line in prose_lines(text):
             if line.startswith("    ") and not line.lstrip().startswith(("*", "-", "|")):
                 pass  # an indented code block or a list continuation: links there are still checked
-            for m in INLINE_LINK.finditer(line):
+            for m in list(INLINE_LINK.finditer(line)) + list(HTML_LINK.finditer(line)):
                 self.check_link(rel, number, m.group(1))
             m = REFERENCE_DEF.match(line)
             if m:
