@@ -1,0 +1,84 @@
+#!/usr/bin/env python3
+"""The layers of the house (docs/layout.md): nothing includes upward, and peers that should not
+know each other do not.
+
+Every #include "a/b/c.h" in a tracked .cpp or .h file is an edge from the including file's
+layer to the included file's layer. Layers are framework/<part> (core, interface, scene, accel,
+oracle, render, pov), grader (with grader/worker), cli, fast, bench, fuzz, assignments,
+solutions and tests. ALLOWED lists, for each layer, the layers it may include besides itself;
+any other edge is printed as FILE:LINE and fails the test, and so does a file in a layer the
+table does not know (a new folder must say where it sits).
+
+Usage: check_include_graph.py SOURCE_DIR
+"""
+import os
+import re
+import subprocess
+import sys
+
+FRAMEWORK = {"framework/" + p for p in ("core", "interface", "scene", "accel", "oracle", "render", "pov")}
+
+ALLOWED = {
+    "framework/core": set(),
+    # The student contract: what assignments and solutions see.
+    "framework/interface": {"framework/core"},
+    "framework/scene": {"framework/core"},
+    "framework/accel": {"framework/core", "framework/interface", "framework/scene"},
+    "framework/oracle": {"framework/core", "framework/scene"},
+    "framework/render": {"framework/core", "framework/interface", "framework/scene", "framework/accel", "framework/oracle"},
+    "framework/pov": {"framework/core", "framework/scene", "framework/oracle", "framework/render"},
+    # Student code and the reference solutions: only the contract.
+    "assignments": {"framework/core", "framework/interface"},
+    "solutions": {"framework/core", "framework/interface"},
+    # Never any assignment code, the fast paths or the command line.
+    "grader": FRAMEWORK | {"grader/worker"},
+    "grader/worker": FRAMEWORK | {"grader"},
+    "fast": FRAMEWORK,
+    "cli": FRAMEWORK | {"grader", "grader/worker"},
+    "bench": FRAMEWORK | {"fast"},
+    "fuzz": FRAMEWORK | {"grader", "grader/worker"},
+    # The test suite and the hostile fixtures may reach anything.
+    "tests": None,
+    "grader/fixtures": None,
+}
+
+
+def layer_of(path):
+    parts = path.split("/")
+    if parts[0] == "framework" and len(parts) > 2:
+        return "framework/" + parts[1]
+    if parts[0] == "grader" and len(parts) > 2 and parts[1] in ("worker", "fixtures"):
+        return "grader/" + parts[1]
+    return parts[0] if len(parts) > 1 else None
+
+
+def main():
+    source = sys.argv[1]
+    files = subprocess.run(["git", "-C", source, "ls-files", "*.cpp", "*.h"], capture_output=True, text=True,
+                           check=True).stdout.split()
+    problems = []
+    include = re.compile(r'\s*#\s*include\s+"([^"]+)"')
+    for path in files:
+        layer = layer_of(path)
+        if layer is None:
+            continue
+        if layer not in ALLOWED:
+            problems.append(f"{path}:1: layer {layer} is not in the include-graph table")
+            continue
+        allowed = ALLOWED[layer]
+        with open(os.path.join(source, path), errors="replace") as f:
+            for number, line in enumerate(f, 1):
+                m = include.match(line)
+                if not m or "/" not in m.group(1):
+                    continue  # a file of the same folder
+                target = layer_of(m.group(1))
+                if allowed is None or target == layer or target in allowed:
+                    continue
+                problems.append(f"{path}:{number}: {layer} includes {m.group(1)} ({target}), against the layers")
+    for p in problems:
+        print(p)
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
