@@ -178,8 +178,6 @@ class Checker:
             text = f.read()
         bases = [os.path.dirname(rel), "", "docs"]
         for number, line in prose_lines(text):
-            if line.startswith("    ") and not line.lstrip().startswith(("*", "-", "|")):
-                pass  # an indented code block or a list continuation: links there are still checked
             for m in list(INLINE_LINK.finditer(line)) + list(HTML_LINK.finditer(line)):
                 self.check_link(rel, number, m.group(1))
             m = REFERENCE_DEF.match(line)
