@@ -9,7 +9,8 @@ Checks, in the Markdown files tracked by git (README.md, docs/*.md, fuzz/README.
   is the GitHub slug of one of the target's headings (or an explicit `<a id="...">`);
 * every `name.md` or `folder/name.md#anchor` written in the text (prose or inline code,
   outside fenced blocks): it names a tracked Markdown file, relative to the citing file, to the
-  repository root or to docs/, and the anchor exists;
+  repository root or to docs/, and the anchor exists; `name.md, "Section"` names a heading of
+  it (the heading contains the quoted words);
 * no citation of pages that live outside the repository: `../shared/...`, `/work/...`, or the
   private reference pages by name (see OUTSIDE_PAGES).
 
@@ -42,6 +43,7 @@ INLINE_LINK = re.compile(r"!?\[(?:[^\]\\]|\\.)*\]\(\s*<?([^)\s>]*)>?(?:\s+\"[^\"
 HTML_LINK = re.compile(r"<(?:a|img)\s[^>]*?(?:href|src)=\"([^\"]+)\"", re.IGNORECASE)
 REFERENCE_DEF = re.compile(r"^\s{0,3}\[[^\]]+\]:\s*<?(\S+?)>?(?:\s|$)")
 MD_MENTION = re.compile(r"(?<![\w/.\-])((?:\.\./|\./|[\w.\-]+/)*[\w.\-]+\.md)(#[\w\-]+)?(?![\w/])")
+QUOTED_SECTION = re.compile(r"(?<![\w/.\-])((?:[\w.\-]+/)*[\w.\-]+\.md),? \"([^\"]+)\"")
 DOCS_MENTION = re.compile(r"(?<![\w/.\-])(docs/[\w.\-]+\.md)(#[\w\-]+)?")
 URL = re.compile(r"^[a-zA-Z][a-zA-Z0-9+.\-]*:")
 
@@ -90,6 +92,16 @@ def prose_lines(text):
             yield number, line
 
 
+def heading_texts(path, cache):
+    """The headings of a Markdown file as plain lower-case text."""
+    if path not in cache:
+        with open(path, encoding="utf-8") as f:
+            text = f.read()
+        cache[path] = [re.sub(r"[`*]", "", m.group(2)).lower() for _, line in prose_lines(text)
+                       for m in [HEADING.match(line)] if m]
+    return cache[path]
+
+
 def anchors_of(path, cache):
     if path not in cache:
         seen = {}
@@ -121,6 +133,7 @@ class Checker:
                 self.dirs.add(d)
                 d = os.path.dirname(d)
         self.anchor_cache = {}
+        self.heading_cache = {}
         self.problems = []
 
     def problem(self, rel, number, message):
@@ -167,6 +180,15 @@ class Checker:
                 return
         self.problem(rel, number, f"{path}: names no Markdown file of the repository")
 
+    def check_section(self, rel, number, path, section, bases):
+        """`file.md, "Section"`: a heading of that file contains the quoted words."""
+        for base in bases:
+            target_rel = self.resolve(base, path)
+            if target_rel is not None and target_rel in self.tracked:
+                if not any(section.lower() in h for h in heading_texts(os.path.join(self.root, target_rel), self.heading_cache)):
+                    self.problem(rel, number, f'{path}, "{section}": no heading of {target_rel} says "{section}"')
+                return
+
     def check_outside(self, rel, number, line):
         for pattern, message in OUTSIDE_PATTERNS:
             m = pattern.search(line)
@@ -187,6 +209,8 @@ class Checker:
             without_urls = re.sub(r"[a-zA-Z][a-zA-Z0-9+.\-]*://\S+", "", without_links)
             for m in MD_MENTION.finditer(without_urls):
                 self.check_mention(rel, number, m.group(1), (m.group(2) or "#")[1:], bases)
+            for m in QUOTED_SECTION.finditer(without_urls):
+                self.check_section(rel, number, m.group(1), m.group(2), bases)
             self.check_outside(rel, number, without_urls)
 
     def check_source(self, rel):
