@@ -29,7 +29,16 @@ Scene loadBenchScene(const std::string& name, const std::string& modelsDir) {
             throw Error(std::string(kEnginePath) + ": not found (install the Debian package assimp-testmodels)");
         return loadGltf(kEnginePath);
     }
+    if (name == "stadium") return sceneFromMesh(teapotInAStadium(loadBenchScene("bunny", modelsDir)), "stadium");
     return loadOrGenerateScene(name);
+}
+
+Bounds3f benchRayBounds(const std::string& name, const Scene& scene) {
+    if (name != "stadium") return scene.bounds();
+    // The rays aim at the model, as they would without the stadium; the walls come last.
+    Bounds3f model;
+    for (uint32_t prim = 0; prim + kStadiumWallTriangles < scene.triangleCount(); ++prim) model.extend(scene.primitiveBounds(prim));
+    return model;
 }
 
 }  // namespace rtlab::bench

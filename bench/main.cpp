@@ -105,7 +105,7 @@ int main(int argc, char** argv) {
     Options options;
     CLI::App app{"rtlab bench: accelerators against Embree, and run time against error (docs/performance.md)"};
     app.add_option("--scenes", options.scenes,
-                   "Scenes: bunny, engine, sphereflake, randsoup or glTF paths (default: bunny engine sphereflake; "
+                   "Scenes: bunny, engine, sphereflake, randsoup, stadium or glTF paths (default: bunny engine sphereflake; "
                    "--quick: bunny)")
         ->delimiter(',');
     app.add_option("--systems", options.systems, "Only these rows, e.g. rtlab:bvh-buckets:12,embree:high")

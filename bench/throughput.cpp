@@ -75,7 +75,7 @@ std::vector<ThroughputRecord> runThroughput(const ThroughputOptions& options) {
         if (!scene.spheres.empty())
             throw Error(sceneName + ": the throughput benchmark takes triangle meshes only (Embree gets no spheres)");
         PrimitiveSet primitives(scene);
-        Bounds3f bounds = scene.bounds();
+        Bounds3f bounds = benchRayBounds(sceneName, scene);
         int repeats = options.buildRepeats.value_or(buildRepeats(scene.triangleCount()));
         std::vector<SceneRays> raySets;
         for (RayKind kind : {RayKind::Primary, RayKind::Incoherent})

@@ -2,9 +2,9 @@
 
 #include "framework/core/error.h"
 #include "framework/core/pcg32.h"
+#include "framework/scene/benchmark_scenes.h"
 #include "framework/scene/gltf_loader.h"
 
-#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -144,24 +144,9 @@ TestScene bunnyOrStandIn(const std::string& modelsDir) {
 
 TestScene teapotInAStadium(const std::string& modelsDir) {
     TestScene small = bunnyOrStandIn(modelsDir);
-    Bounds3f box;
-    for (const Vec3& p : small.scene.triangles.positions) box.extend(p);
-    Vec3 centre = box.centre(), extent = box.diagonal();
-    float scale = 1.0f / std::max({extent.x, extent.y, extent.z});
-    std::vector<Vec3> positions;
-    for (const Vec3& p : small.scene.triangles.positions) positions.push_back((p - centre) * scale);
-    std::vector<std::array<uint32_t, 3>> indices(small.scene.triangles.indices.begin(), small.scene.triangles.indices.end());
-    SceneBuilder builder;
-    builder.addMesh(positions, indices);
-    // The stadium: a closed box of side 200 around the unit-sized model, twelve triangles.
-    const float h = 100.0f;
-    std::vector<Vec3> corners;
-    for (int i = 0; i < 8; ++i) corners.push_back(Vec3(i & 1 ? h : -h, i & 2 ? h : -h, i & 4 ? h : -h));
-    builder.addMesh(corners, {{0, 1, 3}, {0, 3, 2}, {4, 6, 7}, {4, 7, 5}, {0, 4, 5}, {0, 5, 1},
-                              {2, 3, 7}, {2, 7, 6}, {0, 2, 6}, {0, 6, 4}, {1, 5, 7}, {1, 7, 3}});
     std::string note = "the " + small.id + " scaled to size 1 inside a closed box of side 200";
     if (!small.note.empty()) note += "; " + small.note;
-    return TestScene{"stadium", note, builder.take(), true, Vec3(50.0f, 50.0f, 50.0f)};
+    return TestScene{"stadium", note, sceneFromMesh(rtlab::teapotInAStadium(small.scene), "stadium"), true, Vec3(50.0f, 50.0f, 50.0f)};
 }
 
 std::vector<TestScene> hitSetScenes(const std::string& modelsDir) {

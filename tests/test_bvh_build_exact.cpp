@@ -5,7 +5,6 @@
 #include "framework/core/pcg32.h"
 #include "framework/interface/a1_bvh.h"
 #include "framework/interface/a2_sah.h"
-#include "solutions/a2_sah/box_accumulator.h"
 
 #include <doctest/doctest.h>
 
@@ -68,21 +67,6 @@ TEST_CASE("describeNode is bit for bit the Bounds3f::extend loop, NaN and signed
         INFO("trial " << trial);
         REQUIRE(sameBits(got.bounds, expected.bounds));
         REQUIRE(sameBits(got.centroidBounds, expected.centroidBounds));
-    }
-}
-
-TEST_CASE("the bucket box accumulator is bit for bit Bounds3f::extend") {
-    Pcg32 rng(12, 5);
-    for (int trial = 0; trial < 20000; ++trial) {
-        std::vector<BuildPrimitive> prims = awkwardPrimitives(rng, rng.next() % 9);
-        Bounds3f expected;
-        BoxAccumulator got;
-        for (const BuildPrimitive& p : prims) {
-            expected.extend(p.bounds);
-            got.extend(p.bounds);
-        }
-        INFO("trial " << trial);
-        REQUIRE(sameBits(got.box(), expected));
     }
 }
 

@@ -119,6 +119,24 @@ const std::vector<std::string>& generatedSceneNames() {
     return names;
 }
 
+TriangleMesh teapotInAStadium(const Scene& model) {
+    Bounds3f box;
+    for (const Vec3& p : model.triangles.positions) box.extend(p);
+    Vec3 centre = box.centre(), extent = box.diagonal();
+    float scale = 1.0f / std::max({extent.x, extent.y, extent.z, 1e-30f});
+    TriangleMesh mesh;
+    for (const Vec3& p : model.triangles.positions) mesh.positions.push_back((p - centre) * scale);
+    mesh.indices = model.triangles.indices;
+    auto base = static_cast<uint32_t>(mesh.positions.size());
+    const float h = 100.0f;
+    for (int i = 0; i < 8; ++i) mesh.positions.push_back(Vec3(i & 1 ? h : -h, i & 2 ? h : -h, i & 4 ? h : -h));
+    // Two triangles per face of the box, corner i having bit 0 = +x, bit 1 = +y, bit 2 = +z.
+    const uint32_t faces[kStadiumWallTriangles][3] = {{0, 1, 3}, {0, 3, 2}, {4, 6, 7}, {4, 7, 5}, {0, 4, 5}, {0, 5, 1},
+                                                      {2, 3, 7}, {2, 7, 6}, {0, 2, 6}, {0, 6, 4}, {1, 5, 7}, {1, 7, 3}};
+    for (const auto& f : faces) mesh.indices.push_back({base + f[0], base + f[1], base + f[2]});
+    return mesh;
+}
+
 Scene sceneFromMesh(TriangleMesh mesh, const std::string& sourcePath) {
     Bounds3f bounds = mesh.bounds();
     Scene scene;

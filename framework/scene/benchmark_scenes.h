@@ -21,6 +21,12 @@ struct TriangleMesh {
     Bounds3f bounds() const;
 };
 
+// Haines's "teapot in a stadium": the model's triangles scaled to a longest extent of 1 and
+// centred at the origin, inside a closed box of side 200 whose kStadiumWallTriangles triangles
+// come last. One resolution for the whole box fails a uniform grid here.
+TriangleMesh teapotInAStadium(const Scene& model);
+inline constexpr uint32_t kStadiumWallTriangles = 12;
+
 // 7,381 spheres (recursion depth 4, 9 children of a third of the radius each) of 144
 // triangles: 1,062,864 triangles.
 TriangleMesh makeSphereflake();

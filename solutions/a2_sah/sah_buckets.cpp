@@ -1,5 +1,4 @@
 // Reference solution: bucketed SAH, the lecture's pseudocode (docs/a2-sah.md#buckets).
-#include "box_accumulator.h"
 #include "sah_cost.h"
 
 #include <algorithm>
@@ -15,12 +14,6 @@ constexpr int kMaxBuckets = 32;
 struct Bucket {
     uint32_t count = 0;
     Bounds3f bounds;
-};
-
-// A bucket while primitives are binned into it: the same, with a box that grows faster.
-struct Bin {
-    uint32_t count = 0;
-    BoxAccumulator bounds;
 };
 
 // The pinned bucket formula, min(B-1, floor(B (c - cmin) / (cmax - cmin))), evaluated in float
@@ -45,7 +38,7 @@ uint32_t splitSahBuckets(std::span<BuildPrimitive> prims, const NodeInfo& node, 
     // non-empty buckets and the right sides of their planes, each primitive's bucket per axis,
     // and room for the partition. Only the B bins in use are cleared: most nodes hold a handful
     // of primitives, and clearing all kMaxBuckets used to cost more than binning them.
-    thread_local std::vector<Bin> bins;
+    thread_local std::vector<Bucket> bins;
     thread_local std::vector<Bucket> buckets, right;
     thread_local std::array<std::vector<uint8_t>, 3> bucketIds;
     thread_local std::vector<BuildPrimitive> rightPart;
@@ -62,11 +55,11 @@ uint32_t splitSahBuckets(std::span<BuildPrimitive> prims, const NodeInfo& node, 
         if (options.allAxes ? !(centroidExtent[axis] > 0) : axis != longest) continue;
         BucketIndex bucketOf{B, node.centroidBounds.lower[axis], centroidExtent[axis]};
         if (bucketIds[axis].size() < n) bucketIds[axis].resize(n);
-        bins.assign(B, Bin{});
+        bins.assign(B, Bucket{});
         // Plain pointers for the hot loop: a store through a uint8_t may alias anything, so
         // through the vectors the compiler would reload their data pointers after every id.
         uint8_t* ids = bucketIds[axis].data();
-        Bin* bin = bins.data();
+        Bucket* bin = bins.data();
         for (uint32_t i = 0; i < n; ++i) {
             int id = bucketOf(prims[i].centroid[axis]);
             ids[i] = static_cast<uint8_t>(id);
@@ -80,7 +73,7 @@ uint32_t splitSahBuckets(std::span<BuildPrimitive> prims, const NodeInfo& node, 
         std::array<int, kMaxBuckets> planeAfter;  // the plane right behind each of them
         for (int b = 0; b < B; ++b) {
             if (bin[b].count == 0) continue;
-            buckets[used] = {bin[b].count, bin[b].bounds.box()};
+            buckets[used] = bin[b];
             planeAfter[used++] = b;
         }
         // Sweep from the right for the right sides, then from the left evaluating each plane

@@ -58,6 +58,7 @@ def main():
                            check=True).stdout.split()
     problems = []
     include = re.compile(r'\s*#\s*include\s+"([^"]+)"')
+    intrinsics = re.compile(r'\s*#\s*include\s+<(\w*intrin\.h|arm_neon\.h)>')
     for path in files:
         layer = layer_of(path)
         if layer is None:
@@ -68,6 +69,9 @@ def main():
         allowed = ALLOWED[layer]
         with open(os.path.join(source, path), errors="replace") as f:
             for number, line in enumerate(f, 1):
+                simd = intrinsics.match(line)
+                if simd and layer not in ("fast", "tests", "bench"):
+                    problems.append(f"{path}:{number}: <{simd.group(1)}> outside fast/: tuned SIMD code lives there")
                 m = include.match(line)
                 if not m or "/" not in m.group(1):
                     continue  # a file of the same folder
