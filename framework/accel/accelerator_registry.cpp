@@ -14,10 +14,11 @@ namespace rtlab {
 AcceleratorType bruteForceType();  // brute_force.cpp
 AcceleratorType bvhType();         // bvh_accelerator.cpp
 AcceleratorType gridType();        // grid/grid_accelerator.cpp
+AcceleratorType twoLevelGridType();  // grid/two_level_grid_accelerator.cpp
 
 namespace {
 
-std::vector<AcceleratorType> frameworkTypes() { return {bruteForceType(), bvhType(), gridType()}; }
+std::vector<AcceleratorType> frameworkTypes() { return {bruteForceType(), bvhType(), gridType(), twoLevelGridType()}; }
 
 // Function-local, so registrations from other files' static initialisers find it built
 // whatever order the linker puts those files in.

@@ -63,10 +63,20 @@ bool intersectGrid(const UniformGrid& grid, Traversal& traversal, Hit& hit);
 // Any hit in (ray.tMin, ray.tMax]: stop at the first primitive that blocks the ray.
 bool occludedGrid(const UniformGrid& grid, Traversal& traversal);
 
+// --- Beyond the lecture (assignments/a3_grid/two_level_grid.cpp; optional, not graded) --------
+
+// A top cell with more than refineAbove primitives gets a child grid over the cell's box (shrunk
+// to its primitives' bounds) by gridResolution's rule for those primitives alone.
+TwoLevelGrid buildTwoLevelGrid(std::span<const Bounds3f> primBounds, const GridOptions& options, uint32_t refineAbove);
+bool intersectTwoLevelGrid(const TwoLevelGrid& grid, Traversal& traversal, Hit& hit);
+bool occludedTwoLevelGrid(const TwoLevelGrid& grid, Traversal& traversal);
+
 // --- Provided by the framework (framework/accel/grid_frame.cpp) ---------------------------------
 
 // A grid over primBounds (the union of the placeable ones) with
 // gridResolution's cells and the widths set, its cells not yet filled.
 UniformGrid gridFrame(std::span<const Bounds3f> primBounds, const GridOptions& options);
+// The same over a given box: the frame of a child grid.
+UniformGrid gridFrameOver(const Bounds3f& bounds, size_t primCount, const GridOptions& options);
 
 }  // namespace rtlab

@@ -44,6 +44,17 @@ inline bool isPlaceable(const Bounds3f& box) {
     return true;
 }
 
+// Beyond the lecture: a two-level grid. The top grid is built by the usual rule; each top cell
+// holding more than a few primitives is refined by a grid of its own, over that cell, with the
+// same rule applied to the primitives of that cell alone. Scenes whose geometry is concentrated
+// in a small part of the box (the teapot in a stadium) get small cells where the geometry is.
+struct TwoLevelGrid {
+    static constexpr uint32_t kNoChild = 0xffffffffu;
+    UniformGrid top;
+    std::vector<uint32_t> childOf;     // per top cell: index into children, or kNoChild
+    std::vector<UniformGrid> children;
+};
+
 // The cells a box overlaps: every cell with lower[a] <= cell[a] <= upper[a] on each axis.
 struct CellRange {
     GridCell lower;

@@ -13,7 +13,13 @@ UniformGrid gridFrame(std::span<const Bounds3f> primBounds, const GridOptions& o
             ++usable;
         }
     if (usable == 0) grid.bounds = Bounds3f(Vec3(0.0f));
-    grid.resolution = gridResolution(grid.bounds, usable, options);
+    return gridFrameOver(grid.bounds, usable, options);
+}
+
+UniformGrid gridFrameOver(const Bounds3f& bounds, size_t primCount, const GridOptions& options) {
+    UniformGrid grid;
+    grid.bounds = bounds;
+    grid.resolution = gridResolution(bounds, primCount, options);
     Vec3 extent = grid.bounds.diagonal();
     for (int a = 0; a < 3; ++a) {
         grid.cellWidth[a] = extent[a] / float(grid.resolution[a]);

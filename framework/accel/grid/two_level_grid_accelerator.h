@@ -1,0 +1,27 @@
+// Wraps the two-level grid (a3, beyond the lecture) in the Accelerator interface.
+#pragma once
+
+#include "framework/accel/accelerator.h"
+#include "framework/interface/grid.h"
+
+namespace rtlab {
+
+class TwoLevelGridAccelerator final : public Accelerator {
+public:
+    TwoLevelGridAccelerator(const GridOptions& options, uint32_t refineAbove) : options_(options), refineAbove_(refineAbove) {}
+
+    void build(const PrimitiveSet& primitives) override;
+    Hit intersect(const Ray& ray, TraversalStats& stats) const override;
+    bool occluded(const Ray& ray, TraversalStats& stats) const override;
+    // The top grid's cells, each with its child grid's cells below it.
+    StructureView structure() const override;
+    size_t memoryBytes() const override;
+
+private:
+    GridOptions options_;
+    uint32_t refineAbove_;
+    const PrimitiveSet* primitives_ = nullptr;
+    TwoLevelGrid grid_;
+};
+
+}  // namespace rtlab
