@@ -103,7 +103,7 @@ size_t judgeOcclusion(PreparedScene& scene, const std::vector<worker::RawQuery>&
     return wrong;
 }
 
-// The efficiency verdict (docs/grading.md, "Efficiency"): the CPU time the kernel counted for
+// The efficiency verdict (docs/grading.md#what-is-tested): the CPU time the kernel counted for
 // the worker while it ran the traversals, against a brute force over the same scene timed by
 // the grader in the same run. The framework's counters are shown too, but live in the worker,
 // so they are feedback, not evidence.

@@ -35,7 +35,7 @@ struct PreparedScenes {
     std::vector<std::shared_ptr<PreparedScene>> list;
 };
 
-// Efficiency bound (docs/grading.md, "Efficiency"): the traversals' CPU time at most this share
+// Efficiency bound (docs/grading.md#what-is-tested): the traversals' CPU time at most this share
 // of a brute force's over the same queries, plus kPhaseSlackSeconds per query phase. A correct
 // traversal takes a few percent of a brute force on the largest test scene; a brute force
 // through the framework's intersect takes about twice the oracle's time.
