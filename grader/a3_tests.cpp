@@ -3,7 +3,7 @@
 // generic accelerator checks (structure, hit sets, efficiency) on the hit-set scenes and the
 // teapot in a stadium.
 #include "framework/core/pcg32.h"
-#include "grader/accelerator_checks.h"
+#include "grader/structure_tests.h"
 #include "grader/assignment_tests.h"
 #include "grader/grid_oracle.h"
 #include "grader/scene_codec.h"
@@ -445,14 +445,13 @@ struct BuiltGrid {
     std::vector<uint32_t> cellStart, primIndices;
 };
 
-std::optional<BuiltGrid> readGrid(const PhaseOutcome& outcome, size_t primCount, std::string* problem) {
+std::optional<BuiltGrid> readGrid(const PhaseOutcome& outcome, std::string* problem) {
     try {
         ByteReader in(outcome.data);
         BuiltGrid grid;
         grid.frame = in.get<GridFrame>();
         grid.cellStart = in.getVector<uint32_t>(size_t(1) << 28);
         grid.primIndices = in.getVector<uint32_t>(size_t(1) << 28);
-        (void)primCount;
         return grid;
     } catch (const WireError& e) {
         *problem = std::string("the build sent malformed results: ") + e.what();
@@ -509,67 +508,39 @@ std::vector<std::string> gridProblems(const BuiltGrid& grid, const std::vector<B
     return problems;
 }
 
-ChildPhase gridBuildPhase(const Scene& scene, const GridOptions& options) {
-    ByteWriter input;
-    writeScene(scene, input);
-    input.put(options);
-    return makePhase(kStubFill, worker::kTaskGridBuild, std::move(input));
-}
-
-ChildPhase gridQueryPhase(worker::GridQuery query, const std::vector<Ray>& rays) {
-    ByteWriter input;
-    input.put<uint8_t>(static_cast<uint8_t>(query));
-    input.putVector(rays);
-    return makePhase(query == worker::GridQuery::Closest ? kStubClosest : kStubOccluded, worker::kTaskGridQuery, std::move(input));
-}
-
-TestGroup gridSceneGroup(std::shared_ptr<PreparedScene> scene) {
-    const GridOptions options;  // the lecture's C = 27
-    TestGroup group{kA3, "a3 grid on " + scene->test.id,
-                    {gridBuildPhase(scene->test.scene, options), gridQueryPhase(worker::GridQuery::Closest, scene->rays.rays),
-                     gridQueryPhase(worker::GridQuery::Occluded, scene->anyHitRays)},
-                    {}};
-    group.score = [scene, options](const SandboxRun& run, std::vector<TestResult>& results) {
-        const std::string tag = "[" + scene->test.id + "] ";
-        auto result = [&](const std::string& name) {
-            TestResult r = makeResult(kA3, "a3/grid/" + name);
-            if (!scene->test.note.empty()) r.details.push_back(tag + scene->test.note);
-            return r;
-        };
-        TestResult structure = result("structure"), closest = result("closest-hits"), anyHit = result("any-hits"),
-                   efficiency = result("efficiency");
-        if (!failedPhaseResult(run.phases[0], structure)) {
-            std::string problem;
-            auto grid = readGrid(run.phases[0], scene->primBounds.size(), &problem);
-            std::vector<std::string> problems = grid ? gridProblems(*grid, scene->primBounds, options) : std::vector<std::string>{problem};
-            for (const std::string& p : problems) structure.details.push_back(tag + p);
-            if (problems.empty())
-                markPassed(structure, tag + "resolution " + describeCell(grid->frame.resolution) + ", " +
-                                          std::to_string(grid->primIndices.size()) + " references (" +
-                                          formatNumber(double(grid->primIndices.size()) / double(std::max<size_t>(1, scene->primBounds.size()))) +
-                                          " per primitive)");
-            else
-                markFailed(structure, tag + problems.front());
-        }
-        auto ordered = readQueries(run.phases[1], scene->rays.rays.size(), closest);
-        auto occluded = readQueries(run.phases[2], scene->anyHitRays.size(), anyHit);
-        size_t wrong = 0;
-        if (ordered) wrong += judgeClosestHits(*scene, *ordered, closest, tag);
-        if (occluded) wrong += judgeOcclusion(*scene, *occluded, anyHit, tag);
-        if (ordered && occluded) {
-            efficiency.details.push_back(tag + "framework counters (feedback, not evidence): cell steps and box tests + primitive tests per ray: closest " +
-                                         formatNumber(meanWork(*ordered)) + ", any-hit " + formatNumber(meanWork(*occluded)));
-            if (wrong == 0) judgeEfficiency(*scene, run, 1, scene->rays.rays.size() + scene->anyHitRays.size(), efficiency, tag);
-            else markFailed(efficiency, "the traversal must return the right hits before its speed counts");
-        } else {
-            const TestResult& missing = !ordered ? closest : anyHit;
-            efficiency.status = missing.status == TestStatus::NotStarted ? TestStatus::NotStarted : TestStatus::Failed;
-            efficiency.reason = missing.reason;
-        }
-        for (TestResult* r : {&structure, &closest, &anyHit}) results.push_back(std::move(*r));
-        if (scene->bruteForceSecondsPerRay > 0.0) results.push_back(std::move(efficiency));
+// The grid as the generic structure tests see it, with the lecture's C = 27.
+StructurePlugin gridPlugin() {
+    const GridOptions options;
+    StructurePlugin plugin;
+    plugin.assignment = kA3;
+    plugin.label = "grid";
+    plugin.build = [options](const Scene& scene) {
+        ByteWriter input;
+        writeScene(scene, input);
+        input.put(options);
+        return makePhase(kStubFill, worker::kTaskGridBuild, std::move(input));
     };
-    return group;
+    plugin.query = [](bool occluded, const std::vector<Ray>& rays) {
+        ByteWriter input;
+        input.put<uint8_t>(static_cast<uint8_t>(occluded ? worker::GridQuery::Occluded : worker::GridQuery::Closest));
+        input.putVector(rays);
+        return makePhase(occluded ? kStubOccluded : kStubClosest, worker::kTaskGridQuery, std::move(input));
+    };
+    plugin.check = [options](const PhaseOutcome& build, const std::vector<Bounds3f>& primBounds) {
+        StructureReport report;
+        std::string problem;
+        auto grid = readGrid(build, &problem);
+        if (!grid) {
+            report.problems.push_back(problem);
+            return report;
+        }
+        report.problems = gridProblems(*grid, primBounds, options);
+        report.summary = "resolution " + describeCell(grid->frame.resolution) + ", " + std::to_string(grid->primIndices.size()) +
+                         " references (" + formatNumber(double(grid->primIndices.size()) / double(std::max<size_t>(1, primBounds.size()))) +
+                         " per primitive)";
+        return report;
+    };
+    return plugin;
 }
 
 }  // namespace
@@ -580,9 +551,10 @@ std::vector<TestGroup> a3Groups(GradingContext& context) {
     groups.push_back(cellGroup());
     groups.push_back(ddaGroup());
     groups.push_back(cellOrderGroup(context.seed));
-    for (const auto& scene : hitSetScenes(context).list) groups.push_back(gridSceneGroup(scene));
+    StructurePlugin grid = gridPlugin();
+    for (const auto& scene : hitSetScenes(context).list) groups.push_back(structureSceneGroup(grid, scene));
     // The stadium: graded for its hits, never for speed (a uniform grid is slow there by design).
-    groups.push_back(gridSceneGroup(prepareScene(teapotInAStadium(context.modelsDir), context.seed)));
+    groups.push_back(structureSceneGroup(grid, prepareScene(teapotInAStadium(context.modelsDir), context.seed)));
     return groups;
 }
 
