@@ -1,10 +1,10 @@
 // a1/a2's functions on the grader's inputs: split calls, a whole build, and traversals of the
 // BVH that build produced.
 #include "framework/accel/bvh_accelerator.h"
-#include "framework/interface/traversal.h"
 #include "framework/interface/a1_bvh.h"
 #include "framework/interface/a2_sah.h"
 #include "grader/scene_codec.h"
+#include "grader/worker/query_answers.h"
 #include "grader/worker/task_inputs.h"
 #include "grader/worker/worker_tasks.h"
 
@@ -56,25 +56,11 @@ void runBvhQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
     if (!state.primitives) throw WireError("a query before the build");
     auto query = static_cast<BvhQuery>(input.get<uint8_t>());
     auto rays = input.getVector<Ray>(kMaxPrimitives);
-    std::vector<RawQuery> answers;
-    answers.reserve(rays.size());
-    for (const Ray& ray : rays) {
-        TraversalStats stats;
-        Traversal traversal(*state.primitives, ray, stats);
-        RawQuery answer{kNoHit, 0.0f, 0, 0};
-        if (query == BvhQuery::Occluded) {
-            answer.prim = occludedBvh(state.bvh, traversal) ? 1 : 0;
-        } else {
-            Hit hit;
-            hit.t = ray.tMax;
-            bool found = query == BvhQuery::Ordered ? intersectBvh(state.bvh, traversal, hit) : intersectBvhRecursive(state.bvh, traversal, hit);
-            answer.prim = found ? hit.prim : kNoHit;
-            answer.t = hit.t;
-        }
-        answer.nodeVisits = static_cast<uint32_t>(stats.nodeVisits);
-        answer.primitiveTests = static_cast<uint32_t>(stats.primitiveTests);
-        answers.push_back(answer);
-    }
+    auto answers = answerRays(
+        *state.primitives, rays, query == BvhQuery::Occluded, [&](Traversal& t) { return occludedBvh(state.bvh, t); },
+        [&](Traversal& t, Hit& hit) {
+            return query == BvhQuery::Ordered ? intersectBvh(state.bvh, t, hit) : intersectBvhRecursive(state.bvh, t, hit);
+        });
     output.putVector(answers);
 }
 

@@ -1,8 +1,8 @@
 // a3's functions on the grader's inputs: the resolution rule, cell lookups, the DDA's set-up,
 // step and walk, a whole grid build and traversals of the grid that build produced.
 #include "framework/interface/a3_grid.h"
-#include "framework/interface/traversal.h"
 #include "grader/scene_codec.h"
+#include "grader/worker/query_answers.h"
 #include "grader/worker/task_inputs.h"
 #include "grader/worker/worker_tasks.h"
 
@@ -98,25 +98,9 @@ void runGridQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
     if (!state.primitives) throw WireError("a query before the build");
     auto query = static_cast<GridQuery>(input.get<uint8_t>());
     auto rays = input.getVector<Ray>(kMaxRays);
-    std::vector<RawQuery> answers;
-    answers.reserve(rays.size());
-    for (const Ray& ray : rays) {
-        TraversalStats stats;
-        Traversal traversal(*state.primitives, ray, stats);
-        RawQuery answer{kNoHit, 0.0f, 0, 0};
-        if (query == GridQuery::Occluded) {
-            answer.prim = occludedGrid(state.grid, traversal) ? 1 : 0;
-        } else {
-            Hit hit;
-            hit.t = ray.tMax;
-            answer.prim = intersectGrid(state.grid, traversal, hit) ? hit.prim : kNoHit;
-            answer.t = hit.t;
-        }
-        // Box tests and cell steps together: the grid's share of the work besides its tests.
-        answer.nodeVisits = static_cast<uint32_t>(stats.nodeVisits + stats.cellSteps);
-        answer.primitiveTests = static_cast<uint32_t>(stats.primitiveTests);
-        answers.push_back(answer);
-    }
+    auto answers = answerRays(
+        *state.primitives, rays, query == GridQuery::Occluded, [&](Traversal& t) { return occludedGrid(state.grid, t); },
+        [&](Traversal& t, Hit& hit) { return intersectGrid(state.grid, t, hit); });
     output.putVector(answers);
 }
 

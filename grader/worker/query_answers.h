@@ -1,0 +1,39 @@
+// The answers of a query phase, whatever the structure: one RawQuery per ray, the traversal's
+// result with the framework's counters beside it (feedback only).
+#pragma once
+
+#include "framework/interface/traversal.h"
+#include "grader/worker/task_inputs.h"
+
+#include <vector>
+
+namespace rtlab::grader::worker {
+
+// Occluded queries answer prim = 1 or 0; closest-hit ones the primitive (kNoHit on a miss) and
+// t. `occludes(traversal)` and `closest(traversal, hit)` call the student's traversal.
+template <typename Occludes, typename Closest>
+std::vector<RawQuery> answerRays(const PrimitiveSet& primitives, const std::vector<Ray>& rays, bool occluded,
+                                 Occludes&& occludes, Closest&& closest) {
+    std::vector<RawQuery> answers;
+    answers.reserve(rays.size());
+    for (const Ray& ray : rays) {
+        TraversalStats stats;
+        Traversal traversal(primitives, ray, stats);
+        RawQuery answer{kNoHit, 0.0f, 0, 0};
+        if (occluded) {
+            answer.prim = occludes(traversal) ? 1 : 0;
+        } else {
+            Hit hit;
+            hit.t = ray.tMax;
+            answer.prim = closest(traversal, hit) ? hit.prim : kNoHit;
+            answer.t = hit.t;
+        }
+        // Box tests and cell steps together: a structure's work besides its primitive tests.
+        answer.nodeVisits = static_cast<uint32_t>(stats.nodeVisits + stats.cellSteps + stats.planeSteps);
+        answer.primitiveTests = static_cast<uint32_t>(stats.primitiveTests);
+        answers.push_back(answer);
+    }
+    return answers;
+}
+
+}  // namespace rtlab::grader::worker
