@@ -5,11 +5,20 @@
 namespace rtlab::grader {
 namespace {
 
-// a1 also owns the image tests: they render through the student's BVH.
-std::vector<TestGroup> a1AndImageGroups(GradingContext& context) {
-    std::vector<TestGroup> groups = a1Groups(context);
-    for (TestGroup& g : imageGroups(context)) groups.push_back(std::move(g));
+// An assignment's groups followed by its image tests, rendered through its structure.
+template <std::vector<TestGroup> (*groupsOf)(GradingContext&)>
+std::vector<TestGroup> withImages(GradingContext& context, const ImageConfig& images) {
+    std::vector<TestGroup> groups = groupsOf(context);
+    for (TestGroup& g : imageGroups(context, images)) groups.push_back(std::move(g));
     return groups;
+}
+
+std::vector<TestGroup> a1WithImages(GradingContext& context) {
+    return withImages<a1Groups>(context, {"a1", "bvh-median", "the renderer with --accel bvh-median (a0 + a1 functions)"});
+}
+
+std::vector<TestGroup> a3WithImages(GradingContext& context) {
+    return withImages<a3Groups>(context, {"a3", "grid", "the renderer with --accel grid (a0 + a3 functions)"});
 }
 
 }  // namespace
@@ -17,9 +26,9 @@ std::vector<TestGroup> a1AndImageGroups(GradingContext& context) {
 const std::vector<Assignment>& assignments() {
     static const std::vector<Assignment> list{
         {"a0", "ray-box, ray-triangle and ray-sphere tests", a0Groups},
-        {"a1", "BVH with median, middle and equal-counts splits", a1AndImageGroups},
+        {"a1", "BVH with median, middle and equal-counts splits", a1WithImages},
         {"a2", "SAH: full sweep and buckets", a2Groups},
-        {"a3", "uniform grid and 3D-DDA", a3Groups},
+        {"a3", "uniform grid and 3D-DDA", a3WithImages},
     };
     return list;
 }

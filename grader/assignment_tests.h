@@ -12,7 +12,13 @@ std::vector<TestGroup> a0Groups(GradingContext& context);      // a0_tests.cpp
 std::vector<TestGroup> a1Groups(GradingContext& context);      // a1_tests.cpp
 std::vector<TestGroup> a2Groups(GradingContext& context);      // a2_tests.cpp
 std::vector<TestGroup> a3Groups(GradingContext& context);      // a3_tests.cpp
-std::vector<TestGroup> imageGroups(GradingContext& context);   // image_tests.cpp
+// The image tests of an assignment whose structure renders the scenes (image_tests.cpp).
+struct ImageConfig {
+    std::string assignment;   // "a1": tests named a1/images/<scene>
+    std::string accelerator;  // the registry name the worker renders with: "bvh-median"
+    std::string stub;         // named in verdicts
+};
+std::vector<TestGroup> imageGroups(GradingContext& context, const ImageConfig& config);
 
 // The stubs named in verdicts ("crashed with SIGSEGV in <stub>").
 inline constexpr const char* kStubBox = "a0 intersectBox (assignments/a0_intersect/ray_box.cpp)";

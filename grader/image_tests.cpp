@@ -1,6 +1,6 @@
 // Images: every scene in scenes/ (and every referenced model, such as the bunny) rendered with
-// the student's BVH (a0 intersections, a1 median build and ordered traversal) and compared with
-// its POV-Ray reference in scenes/refs/. A scene without a reference, or whose reference is
+// the student's structure (a1: the median BVH; a3: the grid; always a0's intersections) and
+// compared with its POV-Ray reference in scenes/refs/. A scene without a reference, or whose reference is
 // older than the scene, scores 0 with that reason, never a silent pass.
 #include "framework/core/error.h"
 #include "framework/core/sha256.h"
@@ -24,8 +24,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kImageAssignment = "a1";
-constexpr const char* kImageAccelerator = "bvh-median";
 // A render passes when at most this share of its pixels differ from the reference by more
 // than kImageThresholdCodes 16-bit codes in some channel.
 constexpr double kImageThresholdCodes = 2.0;
@@ -50,17 +48,19 @@ uint32_t cameraIndex(const Scene& scene, const std::string& name) {
     return static_cast<uint32_t>(&camera - scene.cameras.data());
 }
 
-TestGroup renderGroup(std::shared_ptr<ImageJob> job, const std::string& workDir) {
+TestGroup renderGroup(const ImageConfig& config, std::shared_ptr<ImageJob> job, const std::string& workDir) {
     TestGroup group;
-    group.assignment = kImageAssignment;
-    group.title = "render " + job->name;
-    const std::string stub = std::string("the renderer with --accel ") + kImageAccelerator + " (a0 + a1 functions)";
+    group.assignment = config.assignment;
+    group.title = "render " + job->name + " with " + config.accelerator;
+    worker::RenderRequest request{job->camera, job->reference.width, job->reference.height, 2, {}};
+    if (config.accelerator.size() >= sizeof request.accelerator) throw Error("accelerator name too long: " + config.accelerator);
+    std::copy(config.accelerator.begin(), config.accelerator.end(), request.accelerator);
     ByteWriter input;
     writeScene(job->scene, input);
-    input.put(worker::RenderRequest{job->camera, job->reference.width, job->reference.height, 2});
-    group.phases = {noSetUp(), makePhase(stub, worker::kTaskRender, std::move(input))};
-    group.score = [job, workDir](const SandboxRun& run, std::vector<TestResult>& results) {
-        TestResult result = makeResult(kImageAssignment, std::string(kImageAssignment) + "/images/" + job->name);
+    input.put(request);
+    group.phases = {noSetUp(), makePhase(config.stub, worker::kTaskRender, std::move(input))};
+    group.score = [config, job, workDir](const SandboxRun& run, std::vector<TestResult>& results) {
+        TestResult result = makeResult(config.assignment, config.assignment + "/images/" + job->name);
         if (!failedPhaseResult(run.phases[1], result)) {
             try {
                 ByteReader in(run.phases[1].data);
@@ -104,12 +104,12 @@ TestGroup renderGroup(std::shared_ptr<ImageJob> job, const std::string& workDir)
 
 // A test that cannot run (no reference, scene does not load): no phases, so no child; 0 points
 // and the reason.
-TestGroup unavailableGroup(const std::string& name, const std::string& reason) {
+TestGroup unavailableGroup(const std::string& assignment, const std::string& name, const std::string& reason) {
     TestGroup group;
-    group.assignment = kImageAssignment;
+    group.assignment = assignment;
     group.title = "render " + name;
-    group.score = [name, reason](const SandboxRun&, std::vector<TestResult>& results) {
-        TestResult result = makeResult(kImageAssignment, std::string(kImageAssignment) + "/images/" + name);
+    group.score = [assignment, name, reason](const SandboxRun&, std::vector<TestResult>& results) {
+        TestResult result = makeResult(assignment, assignment + "/images/" + name);
         result.reason = reason;
         results.push_back(std::move(result));
     };
@@ -118,7 +118,7 @@ TestGroup unavailableGroup(const std::string& name, const std::string& reason) {
 
 }  // namespace
 
-std::vector<TestGroup> imageGroups(GradingContext& context) {
+std::vector<TestGroup> imageGroups(GradingContext& context, const ImageConfig& config) {
     // The references and what they were made from (scenes/refs/manifest.json, written by
     // rtlab refs); every scene in scenes/ is graded, with or without a reference.
     const fs::path root(context.sourceDir), refs = root / "scenes" / "refs";
@@ -143,7 +143,7 @@ std::vector<TestGroup> imageGroups(GradingContext& context) {
     std::vector<TestGroup> groups;
     for (const auto& [name, file] : scenes) {
         if (!manifest.contains(name) || !fs::exists(refs / manifest[name].value("image", ""))) {
-            groups.push_back(unavailableGroup(name, "no reference: scenes/refs has none for " + file.filename().string() +
+            groups.push_back(unavailableGroup(config.assignment, name, "no reference: scenes/refs has none for " + file.filename().string() +
                                                         " (an instructor runs rtlab refs)"));
             continue;
         }
@@ -162,10 +162,10 @@ std::vector<TestGroup> imageGroups(GradingContext& context) {
             job->camera = cameraIndex(job->scene, entry.value("camera", "camera"));
             job->reference = readImage(job->referencePath);
         } catch (const std::exception& e) {
-            groups.push_back(unavailableGroup(name, e.what()));
+            groups.push_back(unavailableGroup(config.assignment, name, e.what()));
             continue;
         }
-        groups.push_back(renderGroup(job, context.workDir + "/images"));
+        groups.push_back(renderGroup(config, job, context.workDir + "/images/" + config.assignment));
     }
     return groups;
 }

@@ -101,6 +101,7 @@ struct RenderRequest {
     uint32_t camera;  // index into the scene's cameras
     int32_t width, height;
     int32_t threads;
+    char accelerator[40];  // a registry name (accelerator_registry.h), NUL-terminated
 };
 
 static_assert(std::is_trivially_copyable_v<BoxQuery> && std::is_trivially_copyable_v<TriangleQuery> &&
