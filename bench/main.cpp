@@ -6,6 +6,7 @@
 #include "bench/convergence.h"
 #include "bench/parameter_sweep.h"
 #include "bench/reference_check.h"
+#include "bench/grid_report.h"
 #include "bench/report.h"
 #include "bench/throughput.h"
 #include "framework/core/error.h"
@@ -67,7 +68,11 @@ int runBench(const Options& options) {
         std::cout << "\n## Throughput" << (options.quick ? " (--quick: every 16th ray, one pass)" : "") << "\n";
         writeMarkdown(std::cout, records);
         writeTargets(std::cout, records);
-        if (!options.outDir.empty()) writeCsv(outPath("results.csv"), records);
+        writeGridTargets(std::cout, records);
+        if (!options.outDir.empty()) {
+            writeCsv(outPath("results.csv"), records);
+            writeGridSweepSvg(outPath("grid-sweep.svg"), records);
+        }
     }
     if (!options.skipConvergence) {
         ConvergenceOptions convergence;
