@@ -127,6 +127,35 @@ BvhStructureReport checkBvhStructure(const Bvh& bvh, const std::vector<Bounds3f>
     return report;
 }
 
+std::vector<std::string> oversizedLeaves(const Bvh& bvh, const std::vector<Bounds3f>& primBounds, int maxLeaf) {
+    std::vector<std::string> problems;
+    if (bvh.nodes.empty()) return problems;
+    struct Entry {
+        uint32_t node;
+        int depth;
+    };
+    std::vector<Entry> stack{{0, 0}};
+    while (!stack.empty()) {
+        Entry e = stack.back();
+        stack.pop_back();
+        const BvhNode& node = bvh.nodes[e.node];
+        if (!node.isLeaf()) {
+            stack.push_back({node.offset, e.depth + 1});
+            stack.push_back({e.node + 1, e.depth + 1});
+            continue;
+        }
+        if (node.primCount <= maxLeaf || e.depth >= kMaxBvhDepth - 1) continue;
+        Bounds3f centroids;
+        for (uint32_t k = 0; k < node.primCount; ++k) centroids.extend(primBounds[bvh.primIndices[node.offset + k]].centre());
+        if (centroids.lower == centroids.upper) continue;
+        if (problems.size() < 5)
+            problems.push_back("node " + std::to_string(e.node) + " is a leaf of " + std::to_string(node.primCount) +
+                               " primitives, more than maxLeaf " + std::to_string(maxLeaf) + ", at depth " + std::to_string(e.depth) +
+                               ", although their centroids differ " + describe(centroids) + ": it must be split");
+    }
+    return problems;
+}
+
 double graderSahCost(const Bvh& bvh) {
     if (bvh.nodes.empty()) return 0.0;
     double rootArea = surfaceArea(bvh.nodes[0].bounds);

@@ -24,6 +24,12 @@ struct BvhStructureReport {
 // the union of what they hold. primBounds[i] is primitive i's box.
 BvhStructureReport checkBvhStructure(const Bvh& bvh, const std::vector<Bounds3f>& primBounds, bool checkTight);
 
+// The leaf rule every method shares (docs/a1-bvh.md, "When is a node a leaf?"): a leaf holds
+// more than maxLeaf primitives only when their centroids coincide or the depth cap made it (or
+// when it could not hold them all: 65535 is split further anyway). A problem line per leaf
+// that breaks it (the first few). Only meaningful for a BVH that passed checkBvhStructure.
+std::vector<std::string> oversizedLeaves(const Bvh& bvh, const std::vector<Bounds3f>& primBounds, int maxLeaf);
+
 // SAH cost C = sum over interior nodes of C_trav S(n)/S(root) + sum over leaves of
 // N C_isect S(n)/S(root), C_trav = C_isect = 1, areas in double. A root of zero area costs N.
 // Only meaningful for a BVH that passed checkBvhStructure.

@@ -232,6 +232,41 @@ std::vector<StressScene> stressScenes() {
         b.addTriangle({0, 0, -1}, {4, 0, -1}, {0, 4, -1});
         scenes.push_back({"TRI-12 degenerate triangles", b.take(), {{ray({1, 1, 5}, {0, 0, -1}), false, true, {3}, 6}}});
     }
+    {
+        // Midpoint splits on centroids x = 2^-k peel two primitives off per level while the
+        // smallest centroid is below the midpoint's rounding, then one: 150 of them (the last
+        // ones subnormal) reach the depth cap. A ray along +x meets both children at every
+        // level and keeps one pending per level: a traversal stack smaller than kMaxBvhDepth
+        // overflows. Float rounds 1 + 2^-k to 1 for k >= 24, so those primitives tie at t = 1.
+        SceneBuilder b;
+        std::vector<uint32_t> tied;
+        for (int k = 0; k < 150; ++k) {
+            float x = std::ldexp(1.0f, -k);
+            b.addTriangle({x, -1, -1}, {x, 1, -1}, {x, 0, 1});
+            if (k >= 20) tied.push_back(uint32_t(k));
+        }
+        scenes.push_back({"BVH-10 a tree as deep as the cap", b.take(), {{ray({-1, 0, 0}, {1, 0, 0}), false, true, tied, 1}}});
+    }
+    {
+        // More identical primitives than a leaf's 16-bit primCount holds: splitNode makes this
+        // a leaf (equal centroids), and buildBvh must split it anyway.
+        SceneBuilder b;
+        std::vector<uint32_t> all;
+        for (uint32_t i = 0; i < 70000; ++i) {
+            b.addTriangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+            all.push_back(i);
+        }
+        scenes.push_back({"BVH-11 70000 identical primitives", b.take(), {{ray({0.25f, 0.25f, 1}, {0, 0, -1}), false, true, all, 1}}});
+    }
+    {
+        // Triangles of side 2^62 spread over 31 * 2^62: the root's surface area, 62 * 2^124,
+        // overflows float (FLT_MAX < 2^128) while every edge function and a leaf's area do not,
+        // so only SAH costs computed in float go wrong (all infinite: no split found).
+        SceneBuilder b;
+        const float s = 0x1p62f;
+        for (int k = 0; k < 16; ++k) b.addTriangle({k * 2 * s, 0, 0}, {k * 2 * s + s, 0, 0}, {k * 2 * s, s, 0});
+        scenes.push_back({"BVH-12 coordinates near 2^62", b.take(), {{ray({0x1p60f, 0x1p60f, 1}, {0, 0, -1}), false, true, {0}, 1}}});
+    }
     for (float bad : {nan, kInfinity}) {
         SceneBuilder b;
         b.addTriangle({0, 0, 0}, {1, 0, 0}, {bad, 1, 0});
@@ -263,9 +298,15 @@ TestGroup stressGroup(const BvhConfig& config, std::shared_ptr<StressScene> stre
         for (uint32_t i = 0; i < stress->scene.primitiveCount(); ++i) primBounds.push_back(stress->scene.primitiveBounds(i));
         std::string wireProblem;
         auto bvh = readBvh(run.phases[0], primBounds.size(), &wireProblem);
-        if (!bvh) problems.push_back(wireProblem);
-        else
-            for (const std::string& p : checkBvhStructure(*bvh, primBounds, false).problems) problems.push_back(p);
+        if (!bvh) {
+            problems.push_back(wireProblem);
+        } else {
+            BvhStructureReport report = checkBvhStructure(*bvh, primBounds, false);
+            for (const std::string& p : report.problems) problems.push_back(p);
+            // Leaf sizes mean something only in a valid tree (a broken one may even have cycles).
+            if (report.problems.empty())
+                for (const std::string& p : oversizedLeaves(*bvh, primBounds, config.options.maxLeaf)) problems.push_back(p);
+        }
         TestResult scratch;
         auto closest = readQueries(run.phases[1], closestRays->size(), scratch);
         auto occluded = readQueries(run.phases[2], occlusionRays->size(), scratch);

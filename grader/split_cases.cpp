@@ -81,9 +81,20 @@ std::vector<SplitCase> a2SplitCases() {
     std::vector<Bounds3f> s5 = {box({0, 0, 0}, {10, 1, 1}), box({6, 0, 0}, {16, 1, 1}), box({0, 3, 0}, {10, 4, 1}), box({6, 3, 0}, {16, 4, 1})};
     std::vector<Bounds3f> s6 = {box({-0.0625f, 0, 0}, {0.0625f, 0.125f, 0.125f}), box({0.4375f, 0, 0}, {0.5625f, 0.125f, 0.125f}),
                                 box({0.9375f, 0, 0}, {1.0625f, 0.125f, 0.125f})};
+    // S8: centroids x = 0, c8 and 0.9 (0.9f is the extent). 4 * c8 / 0.9 rounds to just below 3
+    // in float, the reciprocal form c8 * (4 / 0.9) to exactly 3: only the pinned formula puts
+    // c8 in bucket 2, on the left of the best plane. The third box is lifted to y = 0.6 (less
+    // than the x extent, so x stays the longest centroid axis) to make that plane the best.
+    const float c8 = 0x1.599998p-1f, h = 0.125f, q = 1.0f / 64;
+    std::vector<Bounds3f> s8 = {box({-h, -h, -h}, {h, h, h}), box({c8 - h, -h, -h}, {c8 + h, h, h}),
+                                box({0.9f - q, 0.6f - q, -q}, {0.9f + q, 0.6f + q, q})};
     std::vector<Bounds3f> s7;
     for (int i = 0; i < 5; ++i) s7.push_back(box({i / 64.0f, 0, 0}, {1 + i / 64.0f, 1, 1}));
     using F = SplitFunction;
+    const char* s8Why = "centroid x 0, 0.675 (0x1.599998p-1), 0.9; B=4: bucket(0.675) = floor(4 * 0.675 / 0.9) = floor(2.9999998) = 2 in float "
+                        "(the reciprocal form 0.675 * (4 / 0.9) gives 3.0: bucket 3); plane 2, {0,1}|{2}, weighs 2 * 1.05 + 0.0059 = 2.106, "
+                        "plane 0 weighs 0.375 + 2 * 1.095 = 2.564; C = 1 + 2.106/2.432 = 1.87 < leaf 3. Partitioned with the binning's "
+                        "bucket function, prims 0 and 1 go left";
     const char* s1Why = "S_N = 50; k=1: 1 + (6*1 + 46*3)/50 = 3.88; k=2: 1 + (10*2 + 10*2)/50 = 1.8; k=3: 3.88; 1.8 < leaf 4";
     const char* s2Why = "S_N = 6.5; the only split costs 1 + (6 + 6)/6.5 = 2.85";
     const char* s3Why = "S_N = 22; k=1 and k=2 both cost 1 + 34/22: the tie goes to the lower split index; 2.55 < leaf 3";
@@ -113,6 +124,7 @@ std::vector<SplitCase> a2SplitCases() {
         {"S7 sweep, maxLeaf 5: leaf", F::SahSweep, s7, options(5), 0, {}, std::string(s7Why) + "; with maxLeaf 5 the leaf (5) is cheaper"},
         {"S7 buckets B=4, maxLeaf 4", F::SahBuckets, s7, options(4, 4), 2, {0, 1}, std::string(s7Why) + "; buckets 0, 1, 2, 3, 3"},
         {"S7 buckets B=4, maxLeaf 5: leaf", F::SahBuckets, s7, options(5, 4), 0, {}, std::string(s7Why) + "; with maxLeaf 5 the leaf is cheaper"},
+        {"S8 buckets B=4 (the bucket function of the binning partitions)", F::SahBuckets, s8, options(4, 4), 2, {0, 1}, s8Why},
     };
 }
 

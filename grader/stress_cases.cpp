@@ -31,7 +31,14 @@ std::vector<BoxCase> boxCases() {
         {"BOX-01.11", unit, makeRay({0.5f, 0.5f, 0.5f}, {0, 0, 1}), true, 0},
         {"BOX-01.12", unit, makeRay({2, 2, 2}, {-1, -1, -1}), true, 1},
         {"BOX-01.13", unit, makeRay({2, 0, 2}, {-1, 1, -1}), true, 1},
-        {"BOX-02", Bounds3f({-1, -1, 5}, {1, 1, 5}), makeRay({0.25f, 0.25f, 0}, {0, 0, 1}), true, 5},
+        // Rows 3 and 6 turned so that the face plane is z, the last axis: a NaN that an update
+        // lets through survives only there (a later axis would overwrite it).
+        {"BOX-01.14", unit, makeRay({-1, 0.5f, 0}, {1, 0, p}), true, 1},
+        {"BOX-01.15", unit, makeRay({-1, 0.5f, 1}, {1, 0, m}), true, 1},
+        {"BOX-02.1", Bounds3f({-1, -1, 5}, {1, 1, 5}), makeRay({0.25f, 0.25f, 0}, {0, 0, 1}), true, 5},
+        // The query ends on the flat box: entry = exit = tMax = 5. The far-distance factor lifts
+        // every other exit above its entry, so only here does a strict tEnter < tExit show.
+        {"BOX-02.2 (tMax 5)", Bounds3f({-1, -1, 5}, {1, 1, 5}), makeRay({0.25f, 0.25f, 0}, {0, 0, 1}, 0, 5), true, 5},
         {"BOX-03.A", Bounds3f({0, 0, 5}, {1, 1, 5}), makeRay({-0.041f, -0.905f, 3.322f}, {0.402f, 0.905f, 1.678f}), true, 1},
         {"BOX-03.B", Bounds3f({0, -1, 5}, {1, 0, 5}), makeRay({-0.041f, -0.905f, 3.322f}, {0.402f, 0.905f, 1.678f}), true, 1},
         {"BOX-06.1 (tMax 5)", unit, makeRay({0.5f, 0.5f, -10}, {0, 0, 1}, 0, 5), false, 0},

@@ -38,7 +38,7 @@ struct SphereCase {
     float tolerance;  // relative
 };
 
-// BOX-01 (13 rows), BOX-02, BOX-03 (both boxes), BOX-06 plus two tMin rows.
+// BOX-01 (15 rows), BOX-02 (and with tMax on the box), BOX-03 (both boxes), BOX-06 plus two tMin rows.
 std::vector<BoxCase> boxCases();
 // TRI-01, TRI-02, TRI-05 (mirrored half), TRI-06..08, TRI-11..15, BIG-01.
 std::vector<TriangleCase> triangleCases();

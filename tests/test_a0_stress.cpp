@@ -271,6 +271,8 @@ TEST_CASE("BOX-01: the face-plane truth table, +0 and -0 directions") {
         {{-1, 0.5f, -1}, {n0, 0, 1}, false},     {{0.5f, 0.5f, 2}, {0, 0, 1}, false},
         {{0.5f, 0.5f, 0.5f}, {0, 0, 1}, true},   {{2, 2, 2}, {-1, -1, -1}, true},
         {{2, 0, 2}, {-1, 1, -1}, true},  // touches only the corner (1, 1, 1)
+        {{-1, 0.5f, 0}, {1, 0, 0}, true},  // rows 3 and 6 with the face plane z, the last axis
+        {{-1, 0.5f, 1}, {1, 0, n0}, true},
     };
     int number = 1;
     for (const Case& c : cases) {
@@ -279,11 +281,14 @@ TEST_CASE("BOX-01: the face-plane truth table, +0 and -0 directions") {
     }
 }
 
-TEST_CASE("BOX-02: a flat box is hit, entered at t = 5") {
-    auto t = hitBox(Bounds3f(Vec3(-1, -1, 5), Vec3(1, 1, 5)), Ray{{0.25f, 0.25f, 0.0f}, {0.0f, 0.0f, 1.0f}});
+TEST_CASE("BOX-02: a flat box is hit, entered at t = 5, also by a query that ends there") {
+    const Bounds3f flat(Vec3(-1, -1, 5), Vec3(1, 1, 5));
+    auto t = hitBox(flat, Ray{{0.25f, 0.25f, 0.0f}, {0.0f, 0.0f, 1.0f}});
     REQUIRE(t);
     CHECK(*t <= 5.0f);
     CHECK(*t >= nextFloatDown(5.0f));
+    // BOX-02.2: tMax = 5 leaves the interval [5, 5]; a strict final compare would lose it.
+    CHECK(hitBox(flat, Ray{{0.25f, 0.25f, 0.0f}, {0.0f, 0.0f, 1.0f}}, 0.0f, 5.0f));
 }
 
 TEST_CASE("BOX-03: both flat boxes meeting at an edge are hit (Ize's factor)") {
