@@ -34,7 +34,8 @@ void RtlabSystem::trace(std::span<const BenchRay> rays, TraceResult* results, Tr
 }
 
 std::optional<double> RtlabSystem::sahCost() const {
-    if (spec_.name == "brute") return std::nullopt;
+    // The SAH cost of a tree: the BVHs (bvh, bvh4, bvh8) have one; brute force and grids do not.
+    if (!spec_.name.starts_with("bvh")) return std::nullopt;
     return rtlab::sahCost(accelerator_->structure());
 }
 

@@ -152,6 +152,8 @@ std::vector<ThroughputRecord> runThroughput(const ThroughputOptions& options) {
                             r.nodeVisitsPerRay = static_cast<double>(timing.stats.nodeVisits) / timing.stats.rays;
                             r.primitiveTestsPerRay =
                                 static_cast<double>(timing.stats.primitiveTests) / timing.stats.rays;
+                            if (timing.stats.cellSteps > 0)
+                                r.cellStepsPerRay = static_cast<double>(timing.stats.cellSteps) / timing.stats.rays;
                         }
                         r.bytesPerTriangle = system->bytesPerTriangle();
                         if (!isReference && !reference.empty()) {
