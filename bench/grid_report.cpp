@@ -58,7 +58,7 @@ void writeGridTargets(std::ostream& out, const std::vector<ThroughputRecord>& re
 }
 
 void writeGridSweepSvg(const std::string& path, const std::vector<ThroughputRecord>& records) {
-    Plot plot{"Uniform grid: build and trace time against C (cells = C x primitives)", "C", "milliseconds (log)", true, true, {}};
+    Plot plot{"Uniform grid: build and trace time against C (cells = C x primitives)", "C", "milliseconds", true, true, {}};
     const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b"};
     std::vector<std::string> scenes;
     for (const ThroughputRecord& r : records)
