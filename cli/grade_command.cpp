@@ -72,9 +72,11 @@ void gradeFolderOfSubmissions(const GradeFlags& flags) {
     batch.submissionsDir = flags.submissions;
     if (!flags.shard.empty()) batch.shard = grader::Shard::parse(flags.shard);
     // A shard of a fan-out writes reports only, unless a CSV is named; `grade merge` joins them.
-    std::string csv = flags.csv.empty() ? "grades.csv" : flags.csv;
+    // The default lands in out/, which git ignores, wherever the command runs from.
+    std::string csv = flags.csv.empty() ? "out/grades.csv" : flags.csv;
     if (flags.csv.empty() && flags.shard.empty() && fs::exists(csv)) throw Error(csv + " exists; choose the output with --csv FILE");
     if (!flags.csv.empty() || flags.shard.empty()) batch.csvPath = csv;
+    if (fs::path(csv).has_parent_path()) fs::create_directories(fs::path(csv).parent_path());
     batch.reportsDir = flags.reports.empty() ? (fs::path(csv).parent_path() / (fs::path(csv).stem().string() + "-reports")).string()
                                              : flags.reports;
     batch.workDir = g.workDir;
@@ -181,7 +183,7 @@ void addGradeCommand(CLI::App& app) {
     cmd->add_option("--submission", flags->submission, "Build and grade the student folder DIR instead of the linked implementation")
         ->check(CLI::ExistingDirectory);
     cmd->add_option("--submissions", flags->submissions, "Grade every subfolder of DIR into a CSV")->check(CLI::ExistingDirectory);
-    cmd->add_option("--csv", flags->csv, "CSV file for --submissions (default grades.csv, never overwritten unless named)");
+    cmd->add_option("--csv", flags->csv, "CSV file for --submissions (default out/grades.csv, never overwritten unless named)");
     cmd->add_option("--reports", flags->reports, "Folder for the per-student JSON reports of --submissions (default: <csv>-reports)");
     cmd->add_option("--shard", flags->shard, "With --submissions: grade only every N-th folder, starting at the K-th (K/N, by name)");
     cmd->add_flag("--force", flags->force, "With --submissions: grade again the folders whose report exists");

@@ -1,4 +1,4 @@
-// Every common mistake is a test (docs/a0-intersect.md, a1-bvh.md, a2-sah.md, "Common mistakes"):
+// Every common mistake is a test (docs/a0-intersect.md, a1-bvh.md, a2-sah.md, a3-grid.md, "Common mistakes"):
 // each row of those tables is a mutant of the reference solution in tests/mutants/mutants.json,
 // graded by the real grader (rtlab-grader grade --submission), and the test the row names must
 // fail on it, for the reason the row gives. The recipes the pages spell out step by step are
@@ -92,11 +92,12 @@ std::string shortName(const std::string& test) { return test.substr(test.rfind('
 
 // --- Submissions ------------------------------------------------------------------------------
 
-// The solution folders an assignment's grading runs: a1 builds on a0, a2 on both. The others
+// The solution folders an assignment's grading runs: a1 builds on a0, a2 on both, a3 on a0. The others
 // stay the committed stubs (and compile quickly).
 std::vector<std::string> solutionFolders(const std::string& assignment) {
     if (assignment == "a0") return {"a0_intersect"};
     if (assignment == "a1") return {"a0_intersect", "a1_bvh"};
+    if (assignment == "a3") return {"a0_intersect", "a3_grid"};
     return {"a0_intersect", "a1_bvh", "a2_sah"};
 }
 
@@ -189,11 +190,14 @@ void gradeAll(const std::vector<Grading>& gradings, const fs::path& work) {
     auto worker = [&] {
         for (size_t i; (i = next++) < gradings.size();) {
             const Grading& g = gradings[i];
-            std::string command = "'" + (kBinary / "rtlab-grader").string() + "' grade --submission '" + g.submission.string() +
-                                  "' --assignment " + g.assignment + " --json '" + g.json.string() + "' --quiet --root '" +
-                                  kSource.string() + "' --models '" + (kBinary / "models").string() + "' --work '" +
-                                  (work / "grading" / g.id).string() + "' > '" + (work / "reports" / (g.id + ".log")).string() +
-                                  "' 2>&1";
+            // Appended piece by piece: GCC 12 warns (-Wrestrict, wrongly) on "'" + std::string.
+            std::string command;
+            for (const std::string& piece :
+                 {std::string("'"), (kBinary / "rtlab-grader").string(), std::string("' grade --submission '"), g.submission.string(),
+                  "' --assignment " + g.assignment + " --json '", g.json.string(), std::string("' --quiet --root '"), kSource.string(),
+                  std::string("' --models '"), (kBinary / "models").string(), std::string("' --work '"), (work / "grading" / g.id).string(),
+                  std::string("' > '"), (work / "reports" / (g.id + ".log")).string(), std::string("' 2>&1")})
+                command += piece;
             std::system(command.c_str());
         }
     };
