@@ -2,6 +2,7 @@
 
 #include "grader/bvh_structure.h"
 #include "grader/scene_codec.h"
+#include "grader/visit_order.h"
 #include "grader/worker/task_inputs.h"
 
 #include <algorithm>
@@ -38,7 +39,42 @@ ChildPhase queryPhase(Query query, const std::vector<Ray>& rays) {
     return makePhase(stub, worker::kTaskBvhQuery, std::move(input));
 }
 
+// The visit-order test runs on this many of a scene's closest-hit rays.
+constexpr size_t kVisitRays = 300;
+
+ChildPhase visitsPhase(const std::vector<Ray>& rays) {
+    ByteWriter input;
+    input.putVector(rays);
+    return makePhase(kStubOrdered, worker::kTaskBvhVisits, std::move(input));
+}
+
 // --- Parent side ------------------------------------------------------------------------------
+
+// The visit-order verdict on the student's tree (visit_order.h), once the structure is valid.
+void scoreVisitOrder(const PhaseOutcome& outcome, const Bvh* bvh, const PreparedScene& scene, const std::vector<Ray>& rays,
+                     TestResult& result, const std::string& tag) {
+    if (failedPhaseResult(outcome, result)) return;
+    if (!bvh) {
+        markFailed(result, "the structure is invalid, so the order of its leaves means nothing");
+        return;
+    }
+    ByteReader in(outcome.data);
+    std::vector<std::vector<uint32_t>> tested(rays.size());
+    for (std::vector<uint32_t>& list : tested) {
+        auto n = in.get<uint32_t>();
+        if (n > worker::kMaxListedTests) throw WireError("a list of tests longer than the limit");
+        for (uint32_t i = 0; i < n; ++i) list.push_back(in.get<uint32_t>());
+        for (uint32_t prim : list)
+            if (prim >= scene.primBounds.size()) throw WireError("a tested primitive out of range");
+    }
+    VisitOrderVerdict verdict = judgeVisitOrder(*bvh, scene.test.scene, rays, tested);
+    for (const std::string& p : verdict.problems) result.details.push_back(tag + p);
+    std::string line = tag + std::to_string(verdict.wrong) + " of " + std::to_string(verdict.graded) +
+                       " rays visit leaves out of order (rays meeting a box edge within rounding are not graded; " +
+                       std::to_string(allowedVisitOrderErrors(verdict.graded)) + " allowed)";
+    if (verdict.wrong <= allowedVisitOrderErrors(verdict.graded)) markPassed(result, line);
+    else markFailed(result, line + "; first: " + verdict.problems.front());
+}
 
 std::optional<Bvh> readBvh(const PhaseOutcome& outcome, size_t primCount, std::string* problem) {
     try {
@@ -60,8 +96,12 @@ TestGroup hitSetGroup(const BvhConfig& config, std::shared_ptr<PreparedScene> sc
     group.phases = {buildPhase(config, scene->test.scene), queryPhase(Query::Ordered, scene->rays.rays),
                     queryPhase(Query::Occluded, scene->anyHitRays)};
     if (config.recursive) group.phases.push_back(queryPhase(Query::Recursive, scene->rays.rays));
+    auto visitRays = std::make_shared<std::vector<Ray>>(scene->rays.rays.begin(),
+                                                        scene->rays.rays.begin() + std::min(kVisitRays, scene->rays.rays.size()));
+    const size_t visitPhase = group.phases.size();
+    if (config.visitOrder) group.phases.push_back(visitsPhase(*visitRays));
 
-    group.score = [config, scene, &context](const SandboxRun& run, std::vector<TestResult>& results) {
+    group.score = [config, scene, visitRays, visitPhase, &context](const SandboxRun& run, std::vector<TestResult>& results) {
         const std::string prefix = config.assignment + "/" + config.label + "/";
         const std::string tag = "[" + scene->test.id + "] ";
         const std::string key = config.label + "/" + scene->test.id;
@@ -137,7 +177,8 @@ TestGroup hitSetGroup(const BvhConfig& config, std::shared_ptr<PreparedScene> sc
                 }
             }
             if (ordered && occluded && wrongHits == 0) {
-                size_t queries = scene->rays.rays.size() * (config.recursive ? 2 : 1) + scene->anyHitRays.size();
+                size_t queries = scene->rays.rays.size() * (config.recursive ? 2 : 1) + scene->anyHitRays.size() +
+                                 (config.visitOrder ? visitRays->size() : 0);
                 judgeEfficiency(*scene, run, 1, queries, efficiency, tag);
             } else {
                 markFailed(efficiency, "the traversal must return the right hits before its speed counts: " +
@@ -147,9 +188,12 @@ TestGroup hitSetGroup(const BvhConfig& config, std::shared_ptr<PreparedScene> sc
             markFailed(sah, "the structure is invalid, so its SAH cost means nothing");
             markFailed(efficiency, sah.reason);
         }
+        TestResult visits = result("visit-order");
+        if (config.visitOrder) scoreVisitOrder(run.phases[visitPhase], structureValid ? &*bvh : nullptr, *scene, *visitRays, visits, tag);
         bool timed = scene->bruteForceSecondsPerRay > 0.0;
-        for (TestResult* r : {&structure, &sah, &closest, &recursive, &anyHit, &efficiency})
-            if ((r != &recursive || config.recursive) && (r != &efficiency || timed)) results.push_back(std::move(*r));
+        for (TestResult* r : {&structure, &sah, &closest, &recursive, &anyHit, &efficiency, &visits})
+            if ((r != &recursive || config.recursive) && (r != &efficiency || timed) && (r != &visits || config.visitOrder))
+                results.push_back(std::move(*r));
     };
     return group;
 }

@@ -21,6 +21,7 @@ struct BvhConfig {
     std::string buildStub;   // named in verdicts: "a1 buildBvh + a1 splitMedian"
     bool exactSah = false;   // median, middle, equal counts: the reference tree exactly
     bool recursive = false;  // also grade intersectBvhRecursive
+    bool visitOrder = false; // also grade the order intersectBvh visits leaves in (visit_order.h)
 };
 
 // Relative tolerance of the SAH cost for the SAH builders.

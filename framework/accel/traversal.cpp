@@ -8,6 +8,7 @@ namespace rtlab {
 
 bool Traversal::intersect(uint32_t prim, Hit& hit) {
     ++stats_.primitiveTests;
+    if (tested_) tested_->push_back(prim);
     return primitives_.intersect(prim, ray_, hit);
 }
 

@@ -8,6 +8,8 @@
 #include "grader/worker/task_inputs.h"
 #include "grader/worker/worker_tasks.h"
 
+#include <algorithm>
+
 namespace rtlab::grader::worker {
 namespace {
 
@@ -62,6 +64,25 @@ void runBvhQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
             return query == BvhQuery::Ordered ? intersectBvh(state.bvh, t, hit) : intersectBvhRecursive(state.bvh, t, hit);
         });
     output.putVector(answers);
+}
+
+// The ordered traversal again, listing the primitives it tests in order: the visit-order test
+// judges which leaf comes first and whether a leaf is entered beyond the closest hit so far.
+void runBvhVisits(ByteReader& input, ByteWriter& output, WorkerState& state) {
+    if (!state.primitives) throw WireError("a query before the build");
+    std::vector<uint32_t> tested;
+    for (const Ray& ray : input.getVector<Ray>(kMaxPrimitives)) {
+        TraversalStats stats;
+        Traversal traversal(*state.primitives, ray, stats);
+        tested.clear();
+        traversal.listTestsIn(&tested);
+        Hit hit;
+        hit.t = ray.tMax;
+        intersectBvh(state.bvh, traversal, hit);
+        auto n = static_cast<uint32_t>(std::min<size_t>(tested.size(), kMaxListedTests));
+        output.put<uint32_t>(n);
+        for (uint32_t i = 0; i < n; ++i) output.put<uint32_t>(tested[i]);
+    }
 }
 
 }  // namespace rtlab::grader::worker

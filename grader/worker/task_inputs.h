@@ -23,6 +23,7 @@ inline constexpr const char* kTaskSphere = "sphere";            // [SphereQuery]
 inline constexpr const char* kTaskSplit = "split";              // SplitCall... -> per call u32 k, u32 order[n]
 inline constexpr const char* kTaskBvhBuild = "bvh-build";       // scene, BvhOptions -> [BvhNode], [u32]
 inline constexpr const char* kTaskBvhQuery = "bvh-query";       // u8 BvhQuery, [Ray] -> [RawQuery]
+inline constexpr const char* kTaskBvhVisits = "bvh-visits";     // [Ray] -> per ray u32 n, u32 prim[n]
 inline constexpr const char* kTaskRender = "render";            // scene, RenderRequest -> w, h, c, [f32]
 inline constexpr const char* kTaskGridResolution = "grid-resolution";  // [ResolutionCall] -> per call i32[3]
 inline constexpr const char* kTaskGridCell = "grid-cell";       // GridFrame, [Vec3] -> per point i32[3]
@@ -91,6 +92,10 @@ struct DdaStepCall {
     DdaState state;
     std::array<int32_t, 3> resolution;
 };
+
+// The most primitive tests bvh-visits lists for one ray (the rest are cut: the list is judged
+// by its start and by where leaves are entered, and a longer one is already wrong).
+inline constexpr uint32_t kMaxListedTests = 4096;
 
 // The longest walk dda-walk reports: more cells than any graded grid has along a ray.
 inline constexpr uint32_t kMaxWalkCells = 4096;

@@ -23,6 +23,7 @@ constexpr std::array kTasks = {
     NamedTask{kTaskSplit, runSplitCalls},
     NamedTask{kTaskBvhBuild, runBvhBuild},
     NamedTask{kTaskBvhQuery, runBvhQuery},
+    NamedTask{kTaskBvhVisits, runBvhVisits},
     NamedTask{kTaskRender, runRender},
     NamedTask{kTaskGridResolution, runGridResolution},
     NamedTask{kTaskGridCell, runGridCell},

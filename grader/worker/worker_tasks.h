@@ -35,6 +35,7 @@ void runSphereQueries(ByteReader& input, ByteWriter& output, WorkerState& state)
 void runSplitCalls(ByteReader& input, ByteWriter& output, WorkerState& state);
 void runBvhBuild(ByteReader& input, ByteWriter& output, WorkerState& state);
 void runBvhQuery(ByteReader& input, ByteWriter& output, WorkerState& state);
+void runBvhVisits(ByteReader& input, ByteWriter& output, WorkerState& state);
 // grid_tasks.cpp
 void runGridResolution(ByteReader& input, ByteWriter& output, WorkerState& state);
 void runGridCell(ByteReader& input, ByteWriter& output, WorkerState& state);
