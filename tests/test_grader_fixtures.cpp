@@ -60,7 +60,7 @@ TEST_CASE("grader fixtures: every hostile or broken submission gets its verdict 
 
     // Run from `work`, so relative paths a fixture tries to write would land there.
     std::string command = "cd '" + work.string() + "' && '" + (binary / "rtlab-solution").string() + "' grade --submissions '" +
-                          submissions.string() + "' --jobs 2 --csv grades.csv --time-limit 1 --memory-limit 256 --compile-time-limit 20" +
+                          submissions.string() + "' --jobs 2 --csv grades.csv --time-limit 1 --memory-limit 256 --compile-time-limit 40" +
                           " --assignment a0 --assignment a1 --models '" + (binary / "models").string() + "' --work '" +
                           (work / "grading").string() + "' > batch.log 2>&1";
     REQUIRE(std::system(command.c_str()) == 0);

@@ -65,7 +65,7 @@ template <int K> constexpr long slow = spin(K) + slow<K - 1>;
 template <> constexpr long slow<0> = 0;
 static_assert(slow<900> != 0);
 CPP
-cap=25
+cap=45
 grade --submissions "$work/slow-submissions" --reports "$work/reports" --csv "$work/slow.csv" --force --jobs 2 \
     --submission-time-limit $cap "${flags[@]}" || fail "batch with a compile hang: exit $?: $(tail -1 "$work/err")"
 grep -q "b-compile-hang: 0.00 of 100.00 points, .*took longer than $cap s (killed)" "$work/err" || fail "compile hang: $(cat "$work/err")"
