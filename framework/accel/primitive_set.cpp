@@ -1,5 +1,7 @@
 #include "framework/accel/primitive_set.h"
 
+#include "framework/interface/traversal.h"
+
 #include "framework/interface/a0_intersect.h"
 
 namespace rtlab {
@@ -24,6 +26,12 @@ bool PrimitiveSet::intersect(uint32_t prim, const Ray& ray, Hit& hit) const {
     if (!intersectSphere(ray, hit.t, s.centre, s.radius, &t)) return false;
     hit = Hit{t, prim, 0.0f, 0.0f};
     return true;
+}
+
+// The traversal context's primitive test (framework/interface/traversal.h), here so the
+// compiler inlines PrimitiveSet::intersect into it: one call per test from any traversal.
+bool intersectPrimitive(const PrimitiveSet& primitives, uint32_t prim, const Ray& ray, Hit& hit) {
+    return primitives.intersect(prim, ray, hit);
 }
 
 }  // namespace rtlab
