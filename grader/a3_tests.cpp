@@ -292,6 +292,8 @@ std::vector<StepCase> stepCases() {
          state({4, 1, 1}, {1, 1, 1}, {2, 2, 3}, {1, 1, 1}, 10)},
         {"stepping out at the bottom", {state({2, 0, 2}, {1, -1, 1}, {3, 1, 2}, {1, 1, 1}, 10), res}, false,
          state({2, -1, 2}, {1, -1, 1}, {3, 2, 2}, {1, 1, 1}, 10)},
+        {"no direction at all: every tNext infinite, the walk is over", {state({1, 1, 1}, {0, 0, 0}, {inf, inf, inf}, {inf, inf, inf}, inf), res},
+         false, state({1, 1, 1}, {0, 0, 0}, {inf, inf, inf}, {inf, inf, inf}, inf)},
         {"a zero direction component (tNext = inf) is never stepped", {state({1, 1, 1}, {0, 1, 0}, {inf, 3, inf}, {inf, 1, inf}, 10), res}, true,
          state({1, 2, 1}, {0, 1, 0}, {inf, 4, inf}, {inf, 1, inf}, 10)},
     };

@@ -105,6 +105,7 @@ std::vector<Ray> raysFor(const Scene& scene, uint64_t seed) {
         if (i % 5 == 1) ray.direction = Vec3(0.0f, i % 2 ? -0.0f : 0.0f, (i % 4 < 2) ? 1.0f : -1.0f);
         if (i % 7 == 2) ray.direction = Vec3(i % 2 ? -0.0f : 0.0f, 1.0f, 0.0f) * (i % 4 < 2 ? 1.0f : -1.0f);
         if (i % 4 == 3) ray.tMax = 0.5f + rng.uniform();
+        if (i % 500 == 0) ray.direction = Vec3(0.0f);  // from inside, tMax = inf: hits nothing, and must end
         rays.push_back(ray);
     }
     return rays;

@@ -8,8 +8,8 @@
 //                                     * cellWidth[a] - origin[a]) / d,
 //                           tDelta = cellWidth[a] / |d|.
 //     Keep tExit as given.
-//   * ddaStep: axis = the smallest tNext, ties to the higher axis. If tNext[axis] > tExit,
-//     return false and change nothing. Else cell[axis] += step[axis], tNext[axis] +=
+//   * ddaStep: axis = the smallest tNext, ties to the higher axis. If tNext[axis] is
+//     kInfinity (a zero direction) or > tExit, return false and change nothing. Else cell[axis] += step[axis], tNext[axis] +=
 //     tDelta[axis], and return whether cell[axis] is still inside 0 .. resolution - 1.
 //
 // Hints:

@@ -46,8 +46,8 @@ void fillGridCells(UniformGrid& grid, std::span<const Bounds3f> primBounds);
 DdaState ddaSetup(const UniformGrid& grid, const Ray& ray, float tEnter, float tExit);
 
 // One step to the next cell: the axis with the smallest tNext (ties go to the HIGHER axis
-// index, so x = y < z steps y). If that tNext is beyond state.tExit the walk is over: return
-// false and leave the state as it is. Otherwise move cell one step along that axis, add tDelta
+// index, so x = y < z steps y). If that tNext is infinite (the ray does not move at all) or
+// beyond state.tExit the walk is over: return false and leave the state as it is. Otherwise move cell one step along that axis, add tDelta
 // to its tNext and return whether the new cell is inside the grid.
 bool ddaStep(DdaState& state, const std::array<int, 3>& resolution);
 

@@ -34,6 +34,7 @@ bool ddaStep(DdaState& state, const std::array<int, 3>& resolution) {
     int axis = 0;
     for (int a = 1; a < 3; ++a)
         if (state.tNext[a] <= state.tNext[axis]) axis = a;
+    if (state.tNext[axis] == kInfinity) return false;  // a zero direction: the ray does not move
     if (state.tNext[axis] > state.tExit) return false;
     state.cell[axis] += state.step[axis];
     state.tNext[axis] += state.tDelta[axis];
