@@ -275,9 +275,9 @@ TEST_CASE("render's accelerator: the default falls back to bvh-median from an a2
     CHECK(notes.str().find("sah_buckets.cpp") != std::string::npos);
 
     // The stub's name is the student's build's: escaped on its way to the terminal.
-    cli::AcceleratorFactory hostile = [&](const AcceleratorSpec& spec) -> std::unique_ptr<Accelerator> {
-        if (spec.name == "bvh-buckets") return std::make_unique<StubAccelerator>("a2 \x1b[2Jsplit\nSahBuckets");
-        return makeAccelerator(spec);
+    cli::AcceleratorFactory hostile = [&](const AcceleratorSpec& asked) -> std::unique_ptr<Accelerator> {
+        if (asked.name == "bvh-buckets") return std::make_unique<StubAccelerator>("a2 \x1b[2Jsplit\nSahBuckets");
+        return makeAccelerator(asked);
     };
     AcceleratorSpec again;
     std::ostringstream escaped;

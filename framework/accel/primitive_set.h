@@ -9,6 +9,7 @@
 #include "framework/scene/scene.h"
 
 #include <array>
+#include <span>
 #include <vector>
 
 namespace rtlab {
@@ -19,6 +20,8 @@ public:
 
     uint32_t size() const { return static_cast<uint32_t>(bounds_.size()); }
     const Bounds3f& bounds(uint32_t prim) const { return bounds_[prim]; }
+    // Every primitive's bounds, indexed by primitive id.
+    std::span<const Bounds3f> allBounds() const { return bounds_; }
     Vec3 centroid(uint32_t prim) const { return bounds_[prim].centre(); }
 
     // Triangles come first (ids 0 .. triangleCount()-1), spheres after them.

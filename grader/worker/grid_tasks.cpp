@@ -85,10 +85,8 @@ void runGridBuild(ByteReader& input, ByteWriter& output, WorkerState& state) {
         options.maxResolution > kMaxFrameResolution)
         throw WireError("bad grid options");
     state.primitives = std::make_unique<PrimitiveSet>(state.scene);
-    std::vector<Bounds3f> bounds;
-    for (uint32_t i = 0; i < state.primitives->size(); ++i) bounds.push_back(state.primitives->bounds(i));
-    state.grid = gridFrame(bounds, options);
-    fillGridCells(state.grid, bounds);
+    state.grid = gridFrame(state.primitives->allBounds(), options);
+    fillGridCells(state.grid, state.primitives->allBounds());
     output.put(GridFrame{state.grid.bounds, state.grid.resolution, state.grid.cellWidth, state.grid.inverseWidth});
     output.putVector(state.grid.cellStart);
     output.putVector(state.grid.primIndices);

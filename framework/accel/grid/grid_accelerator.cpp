@@ -7,11 +7,8 @@ namespace rtlab {
 
 void GridAccelerator::build(const PrimitiveSet& primitives) {
     primitives_ = &primitives;
-    std::vector<Bounds3f> bounds;
-    bounds.reserve(primitives.size());
-    for (uint32_t i = 0; i < primitives.size(); ++i) bounds.push_back(primitives.bounds(i));
-    grid_ = gridFrame(bounds, options_);
-    fillGridCells(grid_, bounds);
+    grid_ = gridFrame(primitives.allBounds(), options_);
+    fillGridCells(grid_, primitives.allBounds());
 }
 
 Hit GridAccelerator::intersect(const Ray& ray, TraversalStats& stats) const {

@@ -7,10 +7,7 @@ namespace rtlab {
 
 void TwoLevelGridAccelerator::build(const PrimitiveSet& primitives) {
     primitives_ = &primitives;
-    std::vector<Bounds3f> bounds;
-    bounds.reserve(primitives.size());
-    for (uint32_t i = 0; i < primitives.size(); ++i) bounds.push_back(primitives.bounds(i));
-    grid_ = buildTwoLevelGrid(bounds, options_, refineAbove_);
+    grid_ = buildTwoLevelGrid(primitives.allBounds(), options_, refineAbove_);
 }
 
 Hit TwoLevelGridAccelerator::intersect(const Ray& ray, TraversalStats& stats) const {
