@@ -109,14 +109,18 @@ void render(RenderOptions options) {
     total += result.shadow;
     double rays = static_cast<double>(std::max<uint64_t>(total.rays, 1));
     std::printf("rendered %dx%d with %s on %d threads in %.3f s (build %.3f s): %.2f Mrays/s, "
-                "%llu camera + %llu shadow rays, per ray %.1f node visits and %.1f primitive tests",
+                "%llu camera + %llu shadow rays, per ray %.1f node visits",
                 options.width, options.height, options.accelerator.name.c_str(),
                 resolveThreadCount(options.threads), result.seconds, buildSeconds,
                 total.rays / std::max(result.seconds, 1e-9) / 1e6,
                 static_cast<unsigned long long>(result.primary.rays),
-                static_cast<unsigned long long>(result.shadow.rays), total.nodeVisits / rays,
-                total.primitiveTests / rays);
-    if (!result.aovs.cost.empty()) std::printf("; cost AOV max %u", maxCost(result.aovs));
+                static_cast<unsigned long long>(result.shadow.rays), total.nodeVisits / rays);
+    // The steps only structures that take them have: a grid's cells, a KD-tree's planes.
+    if (total.cellSteps > 0) std::printf(", %.1f cell steps", total.cellSteps / rays);
+    if (total.planeSteps > 0) std::printf(", %.1f plane steps", total.planeSteps / rays);
+    std::printf(" and %.1f primitive tests", total.primitiveTests / rays);
+    if (!result.aovs.cost.empty()) std::printf("; cost AOV max %u", maxCount(result.aovs.cost));
+    if (!result.aovs.steps.empty()) std::printf("; steps AOV max %u", maxCount(result.aovs.steps));
     std::printf("\n");
 }
 
@@ -146,7 +150,7 @@ void addRenderCommand(CLI::App& app) {
                       "Write a 16-bit linear PNG, the format of the references rtlab compare and refs read");
     command->add_flag("--srgb8", options->srgb8, "Write an 8-bit sRGB PNG for viewing (the default for .png)");
     command->add_option("--exposure", options->exposure, "8-bit sRGB PNG only: multiply by 2^EV before the sRGB curve");
-    command->add_option("--aov", options->aovNames, "Also write an AOV: normal, depth, prim or cost (repeatable)")
+    command->add_option("--aov", options->aovNames, "Also write an AOV: normal, depth, prim, cost or steps (repeatable)")
         ->check(CLI::IsMember({"normal", "depth", "prim", "cost"}))
         ->allow_extra_args(false);  // one name per --aov, so a following SCENE is not taken
     command->add_option("--aov-dir", options->aovDir, "Directory for AOV files OUT.<aov>.<ext> (default: OUT's)")

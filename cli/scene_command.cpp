@@ -4,6 +4,7 @@
 #include "framework/core/error.h"
 #include "framework/scene/benchmark_rays.h"
 #include "framework/scene/benchmark_scenes.h"
+#include "framework/scene/gltf_loader.h"
 #include "framework/scene/gltf_writer.h"
 
 #include <cstdio>
@@ -17,6 +18,8 @@
 namespace rtlab::cli {
 namespace {
 
+constexpr const char* kStadium = "stadium";
+
 std::string hex(uint64_t value) {
     std::ostringstream out;
     out << std::hex << std::setw(16) << std::setfill('0') << value;
@@ -26,10 +29,14 @@ std::string hex(uint64_t value) {
 struct GenerateOptions {
     std::string name;
     std::string outputPath;
+    std::string modelPath;  // the stadium's model
 };
 
 void generate(const GenerateOptions& options) {
-    Scene scene = makeGeneratedScene(options.name);
+    if ((options.name == kStadium) != !options.modelPath.empty())
+        throw Error(options.name == kStadium ? "scene generate stadium needs --model FILE (the model to put in the stadium)"
+                                             : "--model is for scene generate stadium only");
+    Scene scene = options.name == kStadium ? makeStadiumScene(loadGltf(options.modelPath)) : makeGeneratedScene(options.name);
     writeGltf(scene, options.outputPath);
     std::cout << options.name << ": " << scene.triangleCount() << " triangles, checksum "
               << hex(triangleChecksum(scene)) << ", written to " << options.outputPath << "\n";
@@ -88,9 +95,15 @@ void addSceneCommand(CLI::App& app) {
     auto generateOptions = std::make_shared<GenerateOptions>();
     CLI::App* generateCommand = scene->add_subcommand(
         "generate", "Write a procedural benchmark scene as glTF, with a camera and a light so it renders");
-    generateCommand->add_option("name", generateOptions->name, "sphereflake (1,062,864 triangles) or randsoup (2^20)")
+    std::vector<std::string> names = generatedSceneNames();
+    names.push_back(kStadium);
+    generateCommand
+        ->add_option("name", generateOptions->name,
+                     "sphereflake (1,062,864 triangles), randsoup (2^20), or stadium (--model in a box of side 200)")
         ->required()
-        ->check(CLI::IsMember(generatedSceneNames()));
+        ->check(CLI::IsMember(names));
+    generateCommand->add_option("--model", generateOptions->modelPath,
+                                "stadium: the glTF model to scale to size 1 and put at the centre (e.g. build/models/bunny.gltf)");
     generateCommand->add_option("-o,--output", generateOptions->outputPath, "Output file (.glb binary, else .gltf)")
         ->required();
     generateCommand->callback([generateOptions] { generate(*generateOptions); });

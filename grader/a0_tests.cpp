@@ -6,7 +6,7 @@
 #include "grader/hit_judge.h"
 #include "grader/stress_cases.h"
 #include "grader/test_scenes.h"
-#include "grader/worker/task_inputs.h"
+#include "grader/worker/intersection_inputs.h"
 
 #include <cmath>
 #include <cstdio>

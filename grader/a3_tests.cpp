@@ -522,13 +522,9 @@ StructurePlugin gridPlugin() {
         input.put(options);
         return makePhase(kStubFill, worker::kTaskGridBuild, std::move(input));
     };
-    plugin.query = [](bool occluded, const std::vector<Ray>& rays) {
-        ByteWriter input;
-        input.put<uint8_t>(static_cast<uint8_t>(occluded ? worker::GridQuery::Occluded : worker::GridQuery::Closest));
-        input.putVector(rays);
-        return makePhase(occluded ? kStubOccluded : kStubClosest, worker::kTaskGridQuery, std::move(input));
-    };
-    plugin.check = [options](const PhaseOutcome& build, const std::vector<Bounds3f>& primBounds) {
+    plugin.queryTask = worker::kTaskGridQuery;
+    plugin.queries = {{"closest-hits", worker::QueryKind::Closest, kStubClosest}, {"any-hits", worker::QueryKind::Occluded, kStubOccluded}};
+    plugin.check = [options](const PhaseOutcome& build, const std::vector<Bounds3f>& primBounds, CheckScope) {
         StructureReport report;
         std::string problem;
         auto grid = readGrid(build, &problem);
@@ -542,6 +538,10 @@ StructurePlugin gridPlugin() {
                          " per primitive)";
         return report;
     };
+    // 70000 identical triangles over the whole grid put every one of them into all 64 x 64
+    // cells: 287 million references, which no correct grid avoids (the case is the BVH's leaf
+    // size limit).
+    plugin.skipDegenerate = {"BVH-11 70000 identical primitives"};
     return plugin;
 }
 
@@ -554,9 +554,9 @@ std::vector<TestGroup> a3Groups(GradingContext& context) {
     groups.push_back(ddaGroup());
     groups.push_back(cellOrderGroup(context.seed));
     StructurePlugin grid = gridPlugin();
-    for (const auto& scene : hitSetScenes(context).list) groups.push_back(structureSceneGroup(grid, scene));
+    for (TestGroup& g : structureGroups(grid, context)) groups.push_back(std::move(g));
     // The stadium: graded for its hits, never for speed (a uniform grid is slow there by design).
-    groups.push_back(structureSceneGroup(grid, prepareScene(teapotInAStadium(context.modelsDir), context.seed)));
+    groups.push_back(structureSceneGroup(grid, prepareScene(teapotInAStadium(context.modelsDir), context.seed), context));
     return groups;
 }
 

@@ -25,10 +25,10 @@ std::vector<TestGroup> a3WithImages(GradingContext& context) {
 
 const std::vector<Assignment>& assignments() {
     static const std::vector<Assignment> list{
-        {"a0", "ray-box, ray-triangle and ray-sphere tests", a0Groups},
-        {"a1", "BVH with median, middle and equal-counts splits", a1WithImages},
-        {"a2", "SAH: full sweep and buckets", a2Groups},
-        {"a3", "uniform grid and 3D-DDA", a3WithImages},
+        {"a0", "ray-box, ray-triangle and ray-sphere tests", a0Groups, {"a0_intersect"}},
+        {"a1", "BVH with median, middle and equal-counts splits", a1WithImages, {"a0_intersect", "a1_bvh"}},
+        {"a2", "SAH: full sweep and buckets", a2Groups, {"a0_intersect", "a1_bvh", "a2_sah"}},
+        {"a3", "uniform grid and 3D-DDA", a3WithImages, {"a0_intersect", "a3_grid"}},
     };
     return list;
 }

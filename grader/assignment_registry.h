@@ -14,6 +14,9 @@ struct Assignment {
     std::string id;     // "a3": the prefix of its test names and rubric rules
     std::string title;  // "uniform grid and 3D-DDA"
     std::vector<TestGroup> (*groups)(GradingContext& context);
+    // The folders of assignments/ its tests call: its own and those it builds on (every
+    // structure's traversal calls a0's intersections).
+    std::vector<std::string> folders;
 };
 
 const std::vector<Assignment>& assignments();

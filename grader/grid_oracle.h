@@ -5,7 +5,7 @@
 
 #include "framework/core/ray.h"
 #include "framework/interface/grid.h"
-#include "grader/worker/task_inputs.h"
+#include "grader/worker/grid_inputs.h"
 
 #include <optional>
 #include <span>

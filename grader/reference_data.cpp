@@ -12,6 +12,7 @@
 namespace rtlab::grader {
 namespace {
 
+constexpr const char* kFile = "structures.json";
 constexpr const char* kRegenerate = "an instructor must run `build/rtlab-solution grade --write-reference` (docs/grading.md)";
 
 std::string readFile(const std::string& path) {
@@ -39,7 +40,7 @@ std::string sceneGeometrySha256(const Scene& scene) {
 ReferenceData ReferenceData::load(const std::string& directory) {
     ReferenceData data;
     data.directory_ = directory;
-    std::string path = directory + "/bvh.json", manifestPath = directory + "/manifest.json";
+    std::string path = directory + "/" + kFile, manifestPath = directory + "/manifest.json";
     if (!std::filesystem::exists(path)) {
         data.problem_ = path + " does not exist; " + kRegenerate;
         return data;
@@ -47,15 +48,16 @@ ReferenceData ReferenceData::load(const std::string& directory) {
     std::string text = readFile(path);
     try {
         auto manifest = nlohmann::json::parse(readFile(manifestPath));
-        if (manifest.value("bvh.json", std::string()) != sha256Hex(text)) {
+        if (manifest.value(kFile, std::string()) != sha256Hex(text)) {
             data.problem_ = path + " does not match the SHA-256 in " + manifestPath + "; " + kRegenerate;
             return data;
         }
         auto json = nlohmann::json::parse(text);
         for (const auto& [key, value] : json.at("entries").items())
-            data.entries_[key] = BvhReference{value.at("scene_sha256").get<std::string>(), value.at("sah_cost").get<double>(),
-                                              value.at("closest_work_per_ray").get<double>(),
-                                              value.at("occluded_work_per_ray").get<double>()};
+            data.entries_[key] = StructureReference{
+                value.at("scene_sha256").get<std::string>(),
+                value.contains("cost") ? std::optional<double>(value.at("cost").get<double>()) : std::nullopt,
+                value.at("closest_work_per_ray").get<double>(), value.at("occluded_work_per_ray").get<double>()};
     } catch (const nlohmann::json::exception& e) {
         data.problem_ = path + " or its manifest is malformed (" + e.what() + "); " + kRegenerate;
         data.entries_.clear();
@@ -71,7 +73,7 @@ ReferenceData ReferenceData::forWriting(const std::string& directory) {
     return data;
 }
 
-std::optional<BvhReference> ReferenceData::find(const std::string& key, const std::string& sceneSha256,
+std::optional<StructureReference> ReferenceData::find(const std::string& key, const std::string& sceneSha256,
                                                 std::string* whyNot) const {
     if (!problem_.empty()) {
         *whyNot = problem_;
@@ -93,17 +95,19 @@ void ReferenceData::save() const {
     nlohmann::ordered_json json;
     json["generated_by"] = "rtlab-solution grade --write-reference";
     json["entries"] = nlohmann::ordered_json::object();
-    for (const auto& [key, value] : entries_)
-        json["entries"][key] = {{"scene_sha256", value.sceneSha256},
-                                {"sah_cost", value.sahCost},
-                                {"closest_work_per_ray", value.closestWorkPerRay},
-                                {"occluded_work_per_ray", value.occludedWorkPerRay}};
+    for (const auto& [key, value] : entries_) {
+        nlohmann::ordered_json entry{{"scene_sha256", value.sceneSha256}};
+        if (value.cost) entry["cost"] = *value.cost;
+        entry["closest_work_per_ray"] = value.closestWorkPerRay;
+        entry["occluded_work_per_ray"] = value.occludedWorkPerRay;
+        json["entries"][key] = entry;
+    }
     std::filesystem::create_directories(directory_);
     std::string text = json.dump(1) + "\n";
-    std::string path = directory_ + "/bvh.json";
+    std::string path = directory_ + "/" + kFile;
     std::ofstream(path, std::ios::binary) << text;
     nlohmann::ordered_json manifest;
-    manifest["bvh.json"] = sha256Hex(text);
+    manifest[kFile] = sha256Hex(text);
     std::ofstream(directory_ + "/manifest.json", std::ios::binary) << manifest.dump(1) << "\n";
     if (!std::filesystem::exists(path)) throw Error(path + ": cannot write the reference data");
 }

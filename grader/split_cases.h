@@ -5,7 +5,7 @@
 // float implementation computes is exact and ties are real ties.
 #pragma once
 
-#include "grader/worker/task_inputs.h"
+#include "grader/worker/bvh_inputs.h"
 
 #include "framework/interface/bvh.h"
 #include "grader/test_group.h"

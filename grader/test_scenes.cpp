@@ -146,7 +146,9 @@ TestScene teapotInAStadium(const std::string& modelsDir) {
     TestScene small = bunnyOrStandIn(modelsDir);
     std::string note = "the " + small.id + " scaled to size 1 inside a closed box of side 200";
     if (!small.note.empty()) note += "; " + small.note;
-    return TestScene{"stadium", note, sceneFromMesh(rtlab::teapotInAStadium(small.scene), "stadium"), true, Vec3(50.0f, 50.0f, 50.0f)};
+    // Its own id around the stand-in, so the reference entries of the two never mix.
+    std::string id = small.id == "bunny" ? "stadium" : "stadium-" + small.id;
+    return TestScene{id, note, sceneFromMesh(rtlab::teapotInAStadium(small.scene), "stadium"), true, Vec3(50.0f, 50.0f, 50.0f)};
 }
 
 std::vector<TestScene> hitSetScenes(const std::string& modelsDir) {

@@ -1,7 +1,7 @@
 // The fast paths of the BVH build give exactly what the plain code gives: describeNode's and the
 // bucket boxes' four-wide min/max against Bounds3f::extend, bit for bit, on NaN, signed zeros
 // and infinities; and the bucket partition's order, which the pinned trees
-// (grader/reference/bvh.json) were built with.
+// (grader/reference/structures.json) were built with.
 #include "framework/core/pcg32.h"
 #include "framework/interface/a1_bvh.h"
 #include "framework/interface/a2_sah.h"

@@ -6,6 +6,7 @@
 //
 // Mutants are made by text replacement in the solution files, so a solution edit that removes a
 // replaced text fails here loudly instead of silently grading the unmutated reference.
+#include "grader/assignment_registry.h"
 #include "grader/grading_report.h"
 
 #include <doctest/doctest.h>
@@ -92,13 +93,12 @@ std::string shortName(const std::string& test) { return test.substr(test.rfind('
 
 // --- Submissions ------------------------------------------------------------------------------
 
-// The solution folders an assignment's grading runs: a1 builds on a0, a2 on both, a3 on a0. The others
-// stay the committed stubs (and compile quickly).
+// The solution folders an assignment's grading runs (the registry says what it builds on). The
+// others stay the committed stubs (and compile quickly).
 std::vector<std::string> solutionFolders(const std::string& assignment) {
-    if (assignment == "a0") return {"a0_intersect"};
-    if (assignment == "a1") return {"a0_intersect", "a1_bvh"};
-    if (assignment == "a3") return {"a0_intersect", "a3_grid"};
-    return {"a0_intersect", "a1_bvh", "a2_sah"};
+    const rtlab::grader::Assignment* a = rtlab::grader::findAssignment(assignment);
+    REQUIRE_MESSAGE(a, ("tests/mutants/mutants.json names assignment " + assignment + ", which the registry does not have"));
+    return a->folders;
 }
 
 // Replaces `replace` by `with` in the submission's copy of a solution file. The text must occur

@@ -283,11 +283,11 @@ TEST_CASE("renderer: image sizes out of range are errors") {
     CHECK_THROWS_AS(renderScene(scene, axisCamera(), 10, -1), Error);
 }
 
-TEST_CASE("renderer: AOV images (depth scaled for integer files, cost ramp, primitive colours)") {
+TEST_CASE("renderer: AOV images (depth scaled for integer files, cost and steps ramps, primitive colours)") {
     Scene scene;
     addSquareZ(scene, 0, 0, -3.0f, 1.0f, addMaterial(scene, Vec3(0.5f)));  // leaves the corners empty
     const int size = 24;
-    RenderResult result = renderScene(scene, axisCamera(), size, size, 2, {Aov::Depth, Aov::Primitive, Aov::Cost});
+    RenderResult result = renderScene(scene, axisCamera(), size, size, 2, {Aov::Depth, Aov::Primitive, Aov::Cost, Aov::Steps});
     const AovBuffers& aovs = result.aovs;
     CHECK(aovs.depth.at(0, 0, 0) == kInfinity);  // a miss
     CHECK(aovs.primitive[0] == kNoHit);
@@ -299,10 +299,13 @@ TEST_CASE("renderer: AOV images (depth scaled for integer files, cost ramp, prim
     float largest = *std::max_element(depthInteger.pixels.begin(), depthInteger.pixels.end());
     CHECK(largest == 1.0f);
 
-    // Brute force tests both triangles for every ray: the cost is 2 everywhere, the ramp's top.
-    CHECK(maxCost(aovs) == 2);
+    // Brute force tests both triangles for every ray: the cost is 2 everywhere, the ramp's top;
+    // it has no structure, so no steps at all.
+    CHECK(maxCount(aovs.cost) == 2);
     Image cost = aovImage(Aov::Cost, aovs, size, size, true);
     CHECK(cost.rgb(0, 0) == heatColour(1.0f));
+    CHECK(maxCount(aovs.steps) == 0);
+    CHECK(aovImage(Aov::Steps, aovs, size, size, true).rgb(0, 0) == heatColour(0.0f));
     CHECK(heatColour(0.0f) != heatColour(1.0f));
 
     Image prim = aovImage(Aov::Primitive, aovs, size, size, true);

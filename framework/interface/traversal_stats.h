@@ -14,6 +14,9 @@ struct TraversalStats {
     uint64_t primitiveTests = 0;  // ray-primitive tests actually run
     uint64_t mailboxRepeats = 0;  // tests a mailbox skipped: the primitive was tested already
 
+    // The structure's own work: every box test, cell step and plane step.
+    uint64_t steps() const { return nodeVisits + cellSteps + planeSteps; }
+
     TraversalStats& operator+=(const TraversalStats& o) {
         rays += o.rays;
         nodeVisits += o.nodeVisits;

@@ -10,9 +10,9 @@
 namespace rtlab {
 
 Aov parseAov(const std::string& name) {
-    for (Aov aov : {Aov::Normal, Aov::Depth, Aov::Primitive, Aov::Cost})
+    for (Aov aov : {Aov::Normal, Aov::Depth, Aov::Primitive, Aov::Cost, Aov::Steps})
         if (name == aovName(aov)) return aov;
-    throw Error("--aov " + name + " is not an AOV (valid: normal, depth, prim, cost)");
+    throw Error("--aov " + name + " is not an AOV (valid: normal, depth, prim, cost, steps)");
 }
 
 const char* aovName(Aov aov) {
@@ -21,6 +21,7 @@ const char* aovName(Aov aov) {
     case Aov::Depth: return "depth";
     case Aov::Primitive: return "prim";
     case Aov::Cost: return "cost";
+    case Aov::Steps: return "steps";
     }
     return "?";
 }
@@ -48,8 +49,8 @@ Vec3 heatColour(float x) {
     return glm::mix(kStops[lower], kStops[lower + 1], fraction);
 }
 
-uint32_t maxCost(const AovBuffers& buffers) {
-    return buffers.cost.empty() ? 0 : *std::max_element(buffers.cost.begin(), buffers.cost.end());
+uint32_t maxCount(const std::vector<uint32_t>& counts) {
+    return counts.empty() ? 0 : *std::max_element(counts.begin(), counts.end());
 }
 
 static Image depthImage(const Image& depth, bool integerFile) {
@@ -67,15 +68,17 @@ Image aovImage(Aov aov, const AovBuffers& buffers, int width, int height, bool i
     case Aov::Normal: return buffers.normal;
     case Aov::Depth: return depthImage(buffers.depth, integerFile);
     case Aov::Primitive:
-    case Aov::Cost: break;
+    case Aov::Cost:
+    case Aov::Steps: break;
     }
     Image image(width, height, 3);
-    float scale = 1.0f / static_cast<float>(std::max(maxCost(buffers), 1u));
+    const std::vector<uint32_t>& counts = aov == Aov::Steps ? buffers.steps : buffers.cost;
+    float scale = 1.0f / static_cast<float>(std::max(maxCount(counts), 1u));
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
             size_t i = static_cast<size_t>(y) * width + x;
-            if (aov == Aov::Cost) {
-                image.setRgb(x, y, heatColour(static_cast<float>(buffers.cost[i]) * scale));
+            if (aov != Aov::Primitive) {
+                image.setRgb(x, y, heatColour(static_cast<float>(counts[i]) * scale));
             } else if (buffers.primitive[i] != kNoHit) {
                 image.setRgb(x, y, primitiveColour(buffers.primitive[i]));
             }

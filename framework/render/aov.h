@@ -4,8 +4,11 @@
 //   depth   the hit distance t along the unit-length camera ray (one channel); misses +inf
 //           in float files, and in integer files t / (largest t) with misses 0
 //   prim    a stable hash colour of the primitive id (RGB); misses black
-//   cost    node visits + primitive tests of the primary ray through a colour ramp, scaled
-//           by the image's maximum cost (RGB); the maximum is reported by the caller
+//   cost    all the work of the primary ray (box tests, cell and plane steps, primitive
+//           tests) through a colour ramp, scaled by the image's maximum (RGB); the maximum is
+//           reported by the caller
+//   steps   the structure's own work alone (box tests, cell and plane steps: the cells a
+//           grid's ray visits), the same way
 #pragma once
 
 #include "framework/render/image.h"
@@ -16,9 +19,9 @@
 
 namespace rtlab {
 
-enum class Aov { Normal, Depth, Primitive, Cost };
+enum class Aov { Normal, Depth, Primitive, Cost, Steps };
 
-// Parses "normal" | "depth" | "prim" | "cost"; throws rtlab::Error naming the valid ones.
+// Parses "normal" | "depth" | "prim" | "cost" | "steps"; throws rtlab::Error naming the valid ones.
 Aov parseAov(const std::string& name);
 const char* aovName(Aov aov);
 
@@ -27,7 +30,8 @@ struct AovBuffers {
     Image normal;                   // RGB, 0.5 n + 0.5
     Image depth;                    // 1 channel, t or +inf
     std::vector<uint32_t> primitive;  // id or kNoHit
-    std::vector<uint32_t> cost;       // node visits + primitive tests of the primary ray
+    std::vector<uint32_t> cost;       // TraversalStats::steps() + primitive tests of the primary ray
+    std::vector<uint32_t> steps;      // TraversalStats::steps() of the primary ray
 };
 
 // The image to write for one AOV. integerFile selects the mapping for 8/16-bit files.
@@ -39,6 +43,7 @@ Vec3 primitiveColour(uint32_t prim);
 // A black-purple-orange-yellow ramp (close to matplotlib's inferno) for x in [0, 1].
 Vec3 heatColour(float x);
 
-uint32_t maxCost(const AovBuffers& buffers);
+// The largest count of a cost or steps buffer (0 when empty): the top of its colour ramp.
+uint32_t maxCount(const std::vector<uint32_t>& counts);
 
 }  // namespace rtlab

@@ -26,6 +26,7 @@ AovBuffers allocateAovs(const RenderSettings& settings) {
     if (wants(settings, Aov::Depth)) buffers.depth = Image(settings.width, settings.height, 1);
     if (wants(settings, Aov::Primitive)) buffers.primitive.assign(pixels, kNoHit);
     if (wants(settings, Aov::Cost)) buffers.cost.assign(pixels, 0);
+    if (wants(settings, Aov::Steps)) buffers.steps.assign(pixels, 0);
     return buffers;
 }
 
@@ -63,8 +64,8 @@ RenderResult Renderer::render(const RenderSettings& settings) const {
                 TraversalStats rayStats;
                 Hit hit = accelerator_.intersect(ray, rayStats);
                 stats.primary += rayStats;
-                if (!aovs.cost.empty())
-                    aovs.cost[pixel] = static_cast<uint32_t>(rayStats.nodeVisits + rayStats.primitiveTests);
+                if (!aovs.cost.empty()) aovs.cost[pixel] = static_cast<uint32_t>(rayStats.steps() + rayStats.primitiveTests);
+                if (!aovs.steps.empty()) aovs.steps[pixel] = static_cast<uint32_t>(rayStats.steps());
                 if (!aovs.depth.pixels.empty()) aovs.depth.at(x, y, 0) = hit.found() ? hit.t : kInfinity;
                 if (!hit.found()) continue;  // misses stay black
 

@@ -139,6 +139,10 @@ TriangleMesh teapotInAStadium(const Scene& model) {
 
 Scene sceneFromMesh(TriangleMesh mesh, const std::string& sourcePath) {
     Bounds3f bounds = mesh.bounds();
+    return sceneFromMesh(std::move(mesh), sourcePath, bounds);
+}
+
+Scene sceneFromMesh(TriangleMesh mesh, const std::string& sourcePath, const Bounds3f& bounds) {
     Scene scene;
     scene.sourcePath = sourcePath;
     size_t count = mesh.indices.size();
@@ -162,6 +166,14 @@ Scene sceneFromMesh(TriangleMesh mesh, const std::string& sourcePath) {
     light.intensity = Vec3(std::numbers::pi_v<float> * distance * distance);
     scene.lights.push_back(light);
     return scene;
+}
+
+Scene makeStadiumScene(const Scene& model) {
+    TriangleMesh mesh = teapotInAStadium(model);
+    Bounds3f modelBounds;
+    for (size_t t = 0; t + kStadiumWallTriangles < mesh.indices.size(); ++t)
+        for (uint32_t v : mesh.indices[t]) modelBounds.extend(mesh.positions[v]);
+    return sceneFromMesh(std::move(mesh), "stadium (generated)", modelBounds);
 }
 
 Scene makeGeneratedScene(const std::string& name) {

@@ -49,8 +49,14 @@ Scene makeGeneratedScene(const std::string& name);
 // A generated scene when nameOrPath is one of generatedSceneNames(), else loadGltf(nameOrPath).
 Scene loadOrGenerateScene(const std::string& nameOrPath);
 
-// A renderable scene around any mesh (same material, camera and light as above).
+// A renderable scene around any mesh (same material, camera and light as above), the camera
+// framing viewBounds (the mesh's own bounds unless given).
 Scene sceneFromMesh(TriangleMesh mesh, const std::string& sourcePath);
+Scene sceneFromMesh(TriangleMesh mesh, const std::string& sourcePath, const Bounds3f& viewBounds);
+
+// The teapot in a stadium as a scene that renders: the camera and light frame the model, as the
+// benchmark's rays do, not the stadium's box (`rtlab scene generate stadium --model FILE`).
+Scene makeStadiumScene(const Scene& model);
 
 // FNV-1a 64 over the 9 floats of every triangle in index order (docs/performance.md#checksums).
 uint64_t triangleChecksum(const Scene& scene);

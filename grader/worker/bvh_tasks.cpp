@@ -5,7 +5,7 @@
 #include "framework/interface/a2_sah.h"
 #include "grader/scene_codec.h"
 #include "grader/worker/query_answers.h"
-#include "grader/worker/task_inputs.h"
+#include "grader/worker/bvh_inputs.h"
 #include "grader/worker/worker_tasks.h"
 
 #include <algorithm>
@@ -28,8 +28,6 @@ uint32_t callSplit(const SplitCall& call, std::span<BuildPrimitive> prims) {
     throw WireError("unknown split function");
 }
 
-}  // namespace
-
 // Each call's primitives are handed over in reverse order, so a function must really order
 // them; the answer is k and the order the function left them in.
 void runSplitCalls(ByteReader& input, ByteWriter& output, WorkerState&) {
@@ -49,19 +47,19 @@ void runBvhBuild(ByteReader& input, ByteWriter& output, WorkerState& state) {
     state.scene = readScene(input);
     auto options = input.get<BvhOptions>();
     state.primitives = std::make_unique<PrimitiveSet>(state.scene);
-    state.bvh = buildBvh(buildPrimitivesOf(*state.primitives), options);
-    output.putVector(state.bvh.nodes);
-    output.putVector(state.bvh.primIndices);
+    const Bvh& bvh = state.structure.emplace<Bvh>(buildBvh(buildPrimitivesOf(*state.primitives), options));
+    output.putVector(bvh.nodes);
+    output.putVector(bvh.primIndices);
 }
 
 void runBvhQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
-    if (!state.primitives) throw WireError("a query before the build");
-    auto query = static_cast<BvhQuery>(input.get<uint8_t>());
+    const Bvh& bvh = builtStructure<Bvh>(state);
+    auto query = static_cast<QueryKind>(input.get<uint8_t>());
     auto rays = input.getVector<Ray>(kMaxPrimitives);
     auto answers = answerRays(
-        *state.primitives, rays, query == BvhQuery::Occluded, [&](Traversal& t) { return occludedBvh(state.bvh, t); },
+        *state.primitives, rays, query == QueryKind::Occluded, [&](Traversal& t) { return occludedBvh(bvh, t); },
         [&](Traversal& t, Hit& hit) {
-            return query == BvhQuery::Ordered ? intersectBvh(state.bvh, t, hit) : intersectBvhRecursive(state.bvh, t, hit);
+            return query == QueryKind::Recursive ? intersectBvhRecursive(bvh, t, hit) : intersectBvh(bvh, t, hit);
         });
     output.putVector(answers);
 }
@@ -69,7 +67,7 @@ void runBvhQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
 // The ordered traversal again, listing the primitives it tests in order: the visit-order test
 // judges which leaf comes first and whether a leaf is entered beyond the closest hit so far.
 void runBvhVisits(ByteReader& input, ByteWriter& output, WorkerState& state) {
-    if (!state.primitives) throw WireError("a query before the build");
+    const Bvh& bvh = builtStructure<Bvh>(state);
     std::vector<uint32_t> tested;
     for (const Ray& ray : input.getVector<Ray>(kMaxPrimitives)) {
         TraversalStats stats;
@@ -78,11 +76,18 @@ void runBvhVisits(ByteReader& input, ByteWriter& output, WorkerState& state) {
         traversal.listTestsIn(&tested);
         Hit hit;
         hit.t = ray.tMax;
-        intersectBvh(state.bvh, traversal, hit);
+        intersectBvh(bvh, traversal, hit);
         auto n = static_cast<uint32_t>(std::min<size_t>(tested.size(), kMaxListedTests));
         output.put<uint32_t>(n);
         for (uint32_t i = 0; i < n; ++i) output.put<uint32_t>(tested[i]);
     }
 }
+
+const TaskRegistration registration{{kTaskSplit, runSplitCalls},
+                                    {kTaskBvhBuild, runBvhBuild},
+                                    {kTaskBvhQuery, runBvhQuery},
+                                    {kTaskBvhVisits, runBvhVisits}};
+
+}  // namespace
 
 }  // namespace rtlab::grader::worker

@@ -3,7 +3,7 @@
 #include "framework/interface/a3_grid.h"
 #include "grader/scene_codec.h"
 #include "grader/worker/query_answers.h"
-#include "grader/worker/task_inputs.h"
+#include "grader/worker/grid_inputs.h"
 #include "grader/worker/worker_tasks.h"
 
 namespace rtlab::grader::worker {
@@ -28,8 +28,6 @@ UniformGrid gridOf(const GridFrame& frame) {
 void putCell(ByteWriter& output, const GridCell& cell) {
     for (int c : cell) output.put<int32_t>(c);
 }
-
-}  // namespace
 
 void runGridResolution(ByteReader& input, ByteWriter& output, WorkerState&) {
     for (const ResolutionCall& call : input.getVector<ResolutionCall>(kMaxCalls))
@@ -85,21 +83,28 @@ void runGridBuild(ByteReader& input, ByteWriter& output, WorkerState& state) {
         options.maxResolution > kMaxFrameResolution)
         throw WireError("bad grid options");
     state.primitives = std::make_unique<PrimitiveSet>(state.scene);
-    state.grid = gridFrame(state.primitives->allBounds(), options);
-    fillGridCells(state.grid, state.primitives->allBounds());
-    output.put(GridFrame{state.grid.bounds, state.grid.resolution, state.grid.cellWidth, state.grid.inverseWidth});
-    output.putVector(state.grid.cellStart);
-    output.putVector(state.grid.primIndices);
+    UniformGrid& grid = state.structure.emplace<UniformGrid>(gridFrame(state.primitives->allBounds(), options));
+    fillGridCells(grid, state.primitives->allBounds());
+    output.put(GridFrame{grid.bounds, grid.resolution, grid.cellWidth, grid.inverseWidth});
+    output.putVector(grid.cellStart);
+    output.putVector(grid.primIndices);
 }
 
 void runGridQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
-    if (!state.primitives) throw WireError("a query before the build");
-    auto query = static_cast<GridQuery>(input.get<uint8_t>());
+    const UniformGrid& grid = builtStructure<UniformGrid>(state);
+    auto query = static_cast<QueryKind>(input.get<uint8_t>());
     auto rays = input.getVector<Ray>(kMaxRays);
     auto answers = answerRays(
-        *state.primitives, rays, query == GridQuery::Occluded, [&](Traversal& t) { return occludedGrid(state.grid, t); },
-        [&](Traversal& t, Hit& hit) { return intersectGrid(state.grid, t, hit); });
+        *state.primitives, rays, query == QueryKind::Occluded, [&](Traversal& t) { return occludedGrid(grid, t); },
+        [&](Traversal& t, Hit& hit) { return intersectGrid(grid, t, hit); });
     output.putVector(answers);
 }
+
+const TaskRegistration registration{{kTaskGridResolution, runGridResolution}, {kTaskGridCell, runGridCell},
+                                    {kTaskGridRange, runGridRange},           {kTaskDdaSetup, runDdaSetup},
+                                    {kTaskDdaStep, runDdaStep},               {kTaskDdaWalk, runDdaWalk},
+                                    {kTaskGridBuild, runGridBuild},           {kTaskGridQuery, runGridQuery}};
+
+}  // namespace
 
 }  // namespace rtlab::grader::worker

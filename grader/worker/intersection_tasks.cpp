@@ -1,6 +1,6 @@
 // a0's functions on the grader's cases: one answer per query, in order.
 #include "framework/interface/a0_intersect.h"
-#include "grader/worker/task_inputs.h"
+#include "grader/worker/intersection_inputs.h"
 #include "grader/worker/worker_tasks.h"
 
 #include <limits>
@@ -9,8 +9,6 @@ namespace rtlab::grader::worker {
 namespace {
 
 constexpr uint64_t kMaxQueries = uint64_t(1) << 24;
-
-}  // namespace
 
 void runBoxQueries(ByteReader& input, ByteWriter& output, WorkerState&) {
     for (const BoxQuery& q : input.getVector<BoxQuery>(kMaxQueries)) {
@@ -52,4 +50,10 @@ void runSphereQueries(ByteReader& input, ByteWriter& output, WorkerState&) {
     }
 }
 
+const TaskRegistration registration{{kTaskBox, runBoxQueries},
+                                    {kTaskTriangle, runTriangleQueries},
+                                    {kTaskClosestTriangle, runClosestTriangle},
+                                    {kTaskSphere, runSphereQueries}};
+
+}  // namespace
 }  // namespace rtlab::grader::worker

@@ -28,8 +28,8 @@ std::vector<RawQuery> answerRays(const PrimitiveSet& primitives, const std::vect
             answer.prim = closest(traversal, hit) ? hit.prim : kNoHit;
             answer.t = hit.t;
         }
-        // Box tests and cell steps together: a structure's work besides its primitive tests.
-        answer.nodeVisits = static_cast<uint32_t>(stats.nodeVisits + stats.cellSteps + stats.planeSteps);
+        // Box tests, cell and plane steps together: a structure's work besides its primitive tests.
+        answer.nodeVisits = static_cast<uint32_t>(stats.steps());
         answer.primitiveTests = static_cast<uint32_t>(stats.primitiveTests);
         answers.push_back(answer);
     }

@@ -9,6 +9,7 @@
 #include <algorithm>
 
 namespace rtlab::grader::worker {
+namespace {
 
 void runRender(ByteReader& input, ByteWriter& output, WorkerState& state) {
     state.scene = readScene(input);
@@ -33,5 +34,9 @@ void runRender(ByteReader& input, ByteWriter& output, WorkerState& state) {
     output.put<int32_t>(result.colour.channels);
     output.putVector(result.colour.pixels);
 }
+
+const TaskRegistration registration{{kTaskRender, runRender}};
+
+}  // namespace
 
 }  // namespace rtlab::grader::worker

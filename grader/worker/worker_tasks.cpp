@@ -2,43 +2,36 @@
 
 #include "grader/worker/task_inputs.h"
 
-#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
 
 namespace rtlab::grader::worker {
 namespace {
 
 void runNothing(ByteReader&, ByteWriter&, WorkerState&) {}
 
-struct NamedTask {
-    std::string_view name;
-    Task run;
-};
-
-constexpr std::array kTasks = {
-    NamedTask{kTaskNone, runNothing},
-    NamedTask{kTaskBox, runBoxQueries},
-    NamedTask{kTaskTriangle, runTriangleQueries},
-    NamedTask{kTaskClosestTriangle, runClosestTriangle},
-    NamedTask{kTaskSphere, runSphereQueries},
-    NamedTask{kTaskSplit, runSplitCalls},
-    NamedTask{kTaskBvhBuild, runBvhBuild},
-    NamedTask{kTaskBvhQuery, runBvhQuery},
-    NamedTask{kTaskBvhVisits, runBvhVisits},
-    NamedTask{kTaskRender, runRender},
-    NamedTask{kTaskGridResolution, runGridResolution},
-    NamedTask{kTaskGridCell, runGridCell},
-    NamedTask{kTaskGridRange, runGridRange},
-    NamedTask{kTaskDdaSetup, runDdaSetup},
-    NamedTask{kTaskDdaStep, runDdaStep},
-    NamedTask{kTaskDdaWalk, runDdaWalk},
-    NamedTask{kTaskGridBuild, runGridBuild},
-    NamedTask{kTaskGridQuery, runGridQuery},
-};
+// Function-local, so registrations from other files' static initialisers find it built in
+// whatever order the linker puts those files.
+std::vector<NamedTask>& tasks() {
+    static std::vector<NamedTask> list{{kTaskNone, runNothing}};
+    return list;
+}
 
 }  // namespace
 
+TaskRegistration::TaskRegistration(std::initializer_list<NamedTask> added) {
+    for (const NamedTask& task : added) {
+        if (findTask(task.name)) {
+            std::fprintf(stderr, "rtlab-worker: task %.*s registered twice\n", int(task.name.size()), task.name.data());
+            std::abort();
+        }
+        tasks().push_back(task);
+    }
+}
+
 Task findTask(std::string_view name) {
-    for (const NamedTask& task : kTasks)
+    for (const NamedTask& task : tasks())
         if (task.name == name) return task.run;
     return nullptr;
 }

@@ -1,14 +1,16 @@
-// The tasks a worker runs (task_inputs.h names them and their inputs). Each reads its input,
-// calls student code and writes raw results; what one phase builds (a scene, a BVH) stays in
-// WorkerState for the phases after it.
+// The tasks a worker runs. Each family of tasks (intersection_tasks.cpp, bvh_tasks.cpp,
+// grid_tasks.cpp, ...) names them in its own inputs header and registers them with one
+// TaskRegistration, so a new assignment's tasks are a file of their own and no list here
+// changes. A task reads its input, calls student code and writes raw results; what one phase
+// builds (a scene, a structure) stays in WorkerState for the phases after it.
 #pragma once
 
 #include "framework/accel/primitive_set.h"
-#include "framework/interface/bvh.h"
-#include "framework/interface/grid.h"
 #include "framework/scene/scene.h"
 #include "grader/wire_format.h"
 
+#include <any>
+#include <initializer_list>
 #include <memory>
 #include <string_view>
 
@@ -17,35 +19,33 @@ namespace rtlab::grader::worker {
 struct WorkerState {
     Scene scene;
     std::unique_ptr<PrimitiveSet> primitives;
-    Bvh bvh;
-    UniformGrid grid;
+    // What the last build phase made (a Bvh, a UniformGrid, ...): its query phases read it
+    // back with builtStructure<T>().
+    std::any structure;
 };
+
+// The structure a build phase left, or a WireError when the phases came in the wrong order.
+template <typename T>
+const T& builtStructure(const WorkerState& state) {
+    const T* built = std::any_cast<T>(&state.structure);
+    if (!built || !state.primitives) throw WireError("a query before the build");
+    return *built;
+}
 
 using Task = void (*)(ByteReader& input, ByteWriter& output, WorkerState& state);
 
+struct NamedTask {
+    std::string_view name;
+    Task run;
+};
+
+// `const TaskRegistration registration{{kTaskX, runX}, ...};` at namespace scope of a tasks
+// file adds its tasks while the worker starts; a name registered twice aborts the worker.
+struct TaskRegistration {
+    TaskRegistration(std::initializer_list<NamedTask> tasks);
+};
+
 // nullptr for a name no task has.
 Task findTask(std::string_view name);
-
-// intersection_tasks.cpp
-void runBoxQueries(ByteReader& input, ByteWriter& output, WorkerState& state);
-void runTriangleQueries(ByteReader& input, ByteWriter& output, WorkerState& state);
-void runClosestTriangle(ByteReader& input, ByteWriter& output, WorkerState& state);
-void runSphereQueries(ByteReader& input, ByteWriter& output, WorkerState& state);
-// bvh_tasks.cpp
-void runSplitCalls(ByteReader& input, ByteWriter& output, WorkerState& state);
-void runBvhBuild(ByteReader& input, ByteWriter& output, WorkerState& state);
-void runBvhQuery(ByteReader& input, ByteWriter& output, WorkerState& state);
-void runBvhVisits(ByteReader& input, ByteWriter& output, WorkerState& state);
-// grid_tasks.cpp
-void runGridResolution(ByteReader& input, ByteWriter& output, WorkerState& state);
-void runGridCell(ByteReader& input, ByteWriter& output, WorkerState& state);
-void runGridRange(ByteReader& input, ByteWriter& output, WorkerState& state);
-void runDdaSetup(ByteReader& input, ByteWriter& output, WorkerState& state);
-void runDdaStep(ByteReader& input, ByteWriter& output, WorkerState& state);
-void runDdaWalk(ByteReader& input, ByteWriter& output, WorkerState& state);
-void runGridBuild(ByteReader& input, ByteWriter& output, WorkerState& state);
-void runGridQuery(ByteReader& input, ByteWriter& output, WorkerState& state);
-// render_task.cpp
-void runRender(ByteReader& input, ByteWriter& output, WorkerState& state);
 
 }  // namespace rtlab::grader::worker
