@@ -151,7 +151,7 @@ void addRenderCommand(CLI::App& app) {
     command->add_flag("--srgb8", options->srgb8, "Write an 8-bit sRGB PNG for viewing (the default for .png)");
     command->add_option("--exposure", options->exposure, "8-bit sRGB PNG only: multiply by 2^EV before the sRGB curve");
     command->add_option("--aov", options->aovNames, "Also write an AOV: normal, depth, prim, cost or steps (repeatable)")
-        ->check(CLI::IsMember({"normal", "depth", "prim", "cost"}))
+        ->check(CLI::IsMember({"normal", "depth", "prim", "cost", "steps"}))
         ->allow_extra_args(false);  // one name per --aov, so a following SCENE is not taken
     command->add_option("--aov-dir", options->aovDir, "Directory for AOV files OUT.<aov>.<ext> (default: OUT's)")
         ->check(CLI::ExistingDirectory);

@@ -26,7 +26,7 @@ std::vector<std::string> isolation() {
             "--dev", "/dev", "--tmpfs", "/tmp", "--clearenv", "--setenv", "PATH", "/usr/bin", "--setenv", "LC_ALL", "C"};
 }
 
-const CompileInputs kInside = {"/src", "/include", "/runtime/worker-runtime.o", "/out"};
+const CompileInputs kInside = {"/src", "/include", "/objects", "/out"};
 
 }  // namespace
 
@@ -64,7 +64,7 @@ CompileInputs CompileSandbox::visiblePaths(const CompileInputs& host) const { re
 ProcessResult CompileSandbox::run(const CompileInputs& host, const std::vector<std::string>& command, ProcessLimits limits) const {
     if (!bubblewrap_) {
         // nobody must reach the inputs and write the output; nothing else is shared with it.
-        for (const std::string& dir : {host.sources, host.headers, host.output}) chmod(dir.c_str(), 0755);
+        for (const std::string& dir : {host.sources, host.headers, host.objects, host.output}) chmod(dir.c_str(), 0755);
         chmod(host.output.c_str(), 0777);
         limits.asNobody = true;
         return runProcess(command, kEnvironment, limits);
@@ -72,7 +72,7 @@ ProcessResult CompileSandbox::run(const CompileInputs& host, const std::vector<s
     std::vector<std::string> argv = {kBubblewrap};
     for (auto part : {isolation(), systemMounts()}) argv.insert(argv.end(), part.begin(), part.end());
     argv.insert(argv.end(), {"--ro-bind", host.sources, kInside.sources, "--ro-bind", host.headers, kInside.headers, "--ro-bind",
-                             host.runtimeObject, kInside.runtimeObject, "--bind", host.output, kInside.output, "--chdir", kInside.sources, "--"});
+                             host.objects, kInside.objects, "--bind", host.output, kInside.output, "--chdir", kInside.sources, "--"});
     argv.insert(argv.end(), command.begin(), command.end());
     return runProcess(argv, kEnvironment, limits);
 }

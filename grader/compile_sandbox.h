@@ -1,6 +1,7 @@
 // Where a submission is compiled (docs/grading.md, "Isolation and trust"). The compiler sees
 // the student's files, the headers students are meant to include, the system headers and
-// toolchain, the worker runtime it links against, and a folder for its output; nothing else:
+// toolchain, the objects it links against (the worker runtime, the committed stubs of the
+// assignments not graded), and a folder for its output; nothing else:
 // not solutions/, not the grader's data, not scenes/refs/, not the rest of the machine. Under
 // bubblewrap that is a fresh mount namespace holding only those paths (and no network, no
 // other processes); where the machine allows no namespaces, the compiler runs as the
@@ -16,10 +17,10 @@ namespace rtlab::grader {
 
 // The host folders and files the compiler may see, and where it sees them.
 struct CompileInputs {
-    std::string sources;        // the submission merged over the stubs: assignments/...
-    std::string headers;        // framework/... headers meant for students
-    std::string runtimeObject;  // the worker runtime (build/grader/worker-runtime.o)
-    std::string output;         // a writable, empty folder
+    std::string sources;  // the submission merged over the stubs: assignments/...
+    std::string headers;  // framework/... headers meant for students
+    std::string objects;  // a folder of objects to link: the worker runtime, compiled stubs
+    std::string output;   // a writable, empty folder
 };
 
 class CompileSandbox {

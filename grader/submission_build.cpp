@@ -3,9 +3,11 @@
 #include "framework/core/error.h"
 #include "grader/compile_sandbox.h"
 #include "grader/pristine_stubs.h"
+#include "grader/stub_object_cache.h"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -98,25 +100,59 @@ nlohmann::json readToolchain(const std::string& path) {
     }
 }
 
+// The committed stubs of folders not in `graded` (all of them are graded when it is empty),
+// moved out of stubs.
+std::map<std::string, std::string> takeUngraded(std::map<std::string, std::string>& stubs, const std::vector<std::string>& graded) {
+    std::map<std::string, std::string> ungraded;
+    if (graded.empty()) return ungraded;
+    for (auto it = stubs.begin(); it != stubs.end();) {
+        std::string folder = fs::path(it->first).lexically_relative("assignments").begin()->string();
+        if (std::find(graded.begin(), graded.end(), folder) == graded.end()) {
+            ungraded.insert(*it);
+            it = stubs.erase(it);
+        } else {
+            ++it;
+        }
+    }
+    return ungraded;
+}
+
 }  // namespace
 
 SubmissionBuild buildSubmission(const std::string& submissionDir, const std::string& sourceDir, const std::string& toolchainPath,
-                                const std::string& workDir, const CompileLimits& limits) {
+                                const std::string& workDir, const CompileLimits& limits, const std::vector<std::string>& gradedFolders) {
     if (!fs::is_directory(submissionDir)) throw Error(submissionDir + ": the submission folder does not exist");
     nlohmann::json toolchain = readToolchain(toolchainPath);
     const CompileSandbox& sandbox = CompileSandbox::detect();
+    ProcessLimits processLimits;
+    processLimits.wallSeconds = limits.wallSeconds;
+    processLimits.cpuSeconds = static_cast<int>(limits.wallSeconds) + 1;
+    processLimits.memoryMiB = limits.memoryMiB;
 
     SubmissionBuild build;
     build.isolation = sandbox.description();
     // The runtime is copied, so the compiler needs nothing of the build tree (whose folders an
     // unprivileged user may not be able to enter).
     CompileInputs host{(fs::path(workDir) / "src").string(), (fs::path(workDir) / "include").string(),
-                       (fs::path(workDir) / "worker-runtime.o").string(), (fs::path(workDir) / "out").string()};
+                       (fs::path(workDir) / "objects").string(), (fs::path(workDir) / "out").string()};
     fs::create_directories(host.output);
-    fs::copy_file(toolchain.at("worker_runtime").get<std::string>(), host.runtimeObject, fs::copy_options::overwrite_existing);
-    auto stubs = pristineStubs(sourceDir);
-    build.fromSubmission = mergeSources(submissionDir, stubs, host.sources);
+    fs::create_directories(host.objects);
+    fs::copy_file(toolchain.at("worker_runtime").get<std::string>(), fs::path(host.objects) / "worker-runtime.o",
+                  fs::copy_options::overwrite_existing);
     copyStudentHeaders(sourceDir, host.headers);
+    auto stubs = pristineStubs(sourceDir);
+    // The assignments not graded link their committed stubs, compiled once for every grading
+    // run; if that object cannot be had, they compile with the submission as before.
+    auto ungraded = takeUngraded(stubs, gradedFolders);
+    if (!ungraded.empty()) {
+        std::string why;
+        std::string object = compiledStubObject({ungraded, host.headers, toolchain, (fs::path(toolchainPath).parent_path() / "stub-objects").string(),
+                                                 (fs::path(workDir) / "stubs").string(), processLimits},
+                                                &why);
+        if (object.empty()) stubs.merge(ungraded);
+        else fs::copy_file(object, fs::path(host.objects) / "stubs.o", fs::copy_options::overwrite_existing);
+    }
+    build.fromSubmission = mergeSources(submissionDir, stubs, host.sources);
 
     CompileInputs inside = sandbox.visiblePaths(host);
     std::vector<std::string> command = {fs::canonical(toolchain.at("compiler").get<std::string>()).string()};
@@ -124,14 +160,10 @@ SubmissionBuild buildSubmission(const std::string& submissionDir, const std::str
     command.insert(command.end(), {"-I" + inside.headers, "-I" + inside.sources});
     for (const auto& entry : fs::recursive_directory_iterator(host.sources))
         if (entry.path().extension() == ".cpp") command.push_back((fs::path(inside.sources) / entry.path().lexically_relative(host.sources)).string());
-    command.push_back(inside.runtimeObject);
+    for (const auto& entry : fs::directory_iterator(host.objects)) command.push_back((fs::path(inside.objects) / entry.path().filename()).string());
     for (const auto& flag : toolchain.at("link_flags")) command.push_back(flag.get<std::string>());
     command.insert(command.end(), {"-o", (fs::path(inside.output) / "rtlab-worker").string()});
 
-    ProcessLimits processLimits;
-    processLimits.wallSeconds = limits.wallSeconds;
-    processLimits.cpuSeconds = static_cast<int>(limits.wallSeconds) + 1;
-    processLimits.memoryMiB = limits.memoryMiB;
     ProcessResult result = sandbox.run(host, command, processLimits);
     build.log = result.output;
     if (result.droppedBytes > 0) build.log += "\n[" + std::to_string(result.droppedBytes) + " more bytes of compiler output not shown]\n";

@@ -23,10 +23,13 @@ struct CompileLimits {
     int memoryMiB = 4096;
 };
 
-// toolchainPath: build/grader/submission-toolchain.json; workDir: an empty directory. Throws
-// rtlab::Error with one line when the submission cannot be read (a symbolic link, an
-// unreadable or oversized file).
+// toolchainPath: build/grader/submission-toolchain.json; workDir: an empty directory.
+// gradedFolders: the assignments/ folders the graded tests call, taken from the submission; the
+// others link their committed stubs, compiled once (stub_object_cache.h); empty: every folder
+// from the submission. Throws rtlab::Error with one line when the submission cannot be read
+// (a symbolic link, an unreadable or oversized file).
 SubmissionBuild buildSubmission(const std::string& submissionDir, const std::string& sourceDir, const std::string& toolchainPath,
-                                const std::string& workDir, const CompileLimits& limits = {});
+                                const std::string& workDir, const CompileLimits& limits = {},
+                                const std::vector<std::string>& gradedFolders = {});
 
 }  // namespace rtlab::grader

@@ -1,9 +1,11 @@
 #include "grader/submission_grading.h"
 
 #include "framework/core/error.h"
+#include "grader/assignment_registry.h"
 #include "grader/rubric.h"
 #include "grader/submission_build.h"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <sstream>
@@ -29,6 +31,17 @@ std::string firstError(const std::string& log) {
     return lines.empty() ? "no output" : lines.front();
 }
 
+// The assignments/ folders the chosen assignments' tests call; empty (all of them) when every
+// assignment is graded.
+std::vector<std::string> gradedFolders(const std::vector<std::string>& assignmentIds) {
+    std::vector<std::string> folders;
+    for (const std::string& id : assignmentIds)
+        if (const Assignment* a = findAssignment(id))
+            for (const std::string& folder : a->folders)
+                if (std::find(folders.begin(), folders.end(), folder) == folders.end()) folders.push_back(folder);
+    return folders;
+}
+
 }  // namespace
 
 GradingReport gradeSubmission(const std::string& submissionDir, const SubmissionOptions& options) {
@@ -40,7 +53,8 @@ GradingReport gradeSubmission(const std::string& submissionDir, const Submission
     SubmissionBuild build;
     std::string unreadable;
     try {
-        build = buildSubmission(submissionDir, g.sourceDir, options.toolchainPath, options.workDir + "/build", g.compile);
+        build = buildSubmission(submissionDir, g.sourceDir, options.toolchainPath, options.workDir + "/build", g.compile,
+                                gradedFolders(g.assignments));
     } catch (const Error& e) {
         unreadable = e.what();
     }
