@@ -63,6 +63,7 @@ std::vector<std::string> childGradeArguments(const grader::GradingOptions& g) {
                                           "--compile-time-limit", std::to_string(g.compile.wallSeconds)};
     if (!g.rubricPath.empty()) arguments.insert(arguments.end(), {"--rubric", g.rubricPath});
     for (const std::string& a : g.assignments) arguments.insert(arguments.end(), {"--assignment", a});
+    for (const std::string& t : g.tests) arguments.insert(arguments.end(), {"--test", t});
     return arguments;
 }
 
@@ -176,6 +177,8 @@ void addGradeCommand(CLI::App& app) {
                                                 "BVH structure and SAH cost, images against POV-Ray (docs/grading.md)");
     cmd->add_option("--seed", flags->grading.seed, "Seed of the random ray sets and property tests")->capture_default_str();
     cmd->add_option("--assignment", flags->grading.assignments, "Grade only these assignments (" + grader::assignmentIds() + "); repeatable");
+    cmd->add_option("--test", flags->grading.tests,
+                    "Grade only the tests whose names match this pattern ('*' matches anything: a3/dda/*, */efficiency); repeatable");
     cmd->add_option("--json", flags->json, "Write the JSON report to FILE");
     cmd->add_option("--gradescope", flags->gradescope, "Write Gradescope's results.json to FILE");
     cmd->add_option("--junit", flags->junit, "Write a JUnit XML report to FILE");

@@ -55,6 +55,23 @@ SandboxRun unavailableWorkerRun(size_t phases, const std::string& reason) {
     return run;
 }
 
+bool matchesAny(const std::vector<std::string>& patterns, const std::string& name) {
+    return std::any_of(patterns.begin(), patterns.end(), [&](const std::string& p) { return globMatches(p, name); });
+}
+
+// Whether a group reports a test the patterns ask for. A group's tests are known only from its
+// scoring, which lists every test even when no phase ran (as for a submission that does not
+// compile): scored once on phases that all failed, without a worker.
+bool reportsWantedTest(const TestGroup& group, const std::vector<std::string>& patterns) {
+    std::vector<TestResult> names;
+    try {
+        group.score(unavailableWorkerRun(group.phases.size(), "not run"), names);
+    } catch (const WireError&) {
+        return true;  // cannot tell: run it
+    }
+    return std::any_of(names.begin(), names.end(), [&](const TestResult& r) { return matchesAny(patterns, r.name); });
+}
+
 }  // namespace
 
 GradingReport gradeWorker(const GradingOptions& options) {
@@ -78,6 +95,10 @@ GradingReport gradeWorker(const GradingOptions& options) {
     };
     for (const Assignment& assignment : assignments())
         if (wanted(assignment.id)) add(assignment.groups(context));
+    if (!options.tests.empty()) {
+        std::erase_if(groups, [&](const TestGroup& g) { return !reportsWantedTest(g, options.tests); });
+        if (groups.empty()) throw Error("--test: no test of the graded assignments matches the patterns given");
+    }
 
     GradingReport report;
     report.implementation = options.implementation;
@@ -104,6 +125,8 @@ GradingReport gradeWorker(const GradingOptions& options) {
         if (report.studentOutput.size() < 4096) report.studentOutput += run.output.substr(0, 4096 - report.studentOutput.size());
     }
     if (terminal) std::cerr << "\r\033[K" << std::flush;
+    if (!options.tests.empty())
+        std::erase_if(report.tests, [&](const TestResult& r) { return !matchesAny(options.tests, r.name); });
     mergeSameNamed(report.tests);
     rubric.apply(report.tests);
     if (options.writeReference) context.reference.save();

@@ -20,6 +20,7 @@ struct GradingOptions {
     std::string workDir;     // renders and heat maps
     std::string rubricPath;  // default sourceDir/grader/rubric.json
     std::vector<std::string> assignments;  // empty: every registered one (assignment_registry.h)
+    std::vector<std::string> tests;        // glob patterns of test names (rubric.h's globMatches); empty: all
     std::string workerPath;  // the worker executable holding the code to grade (grader/worker/)
     std::string unavailableWorker;  // when set, no worker runs and every phase fails with this reason
     SandboxLimits limits;

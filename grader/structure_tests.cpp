@@ -216,6 +216,10 @@ TestGroup structureSceneGroup(const StructurePlugin& plugin, std::shared_ptr<Pre
             if (test.kind == worker::QueryKind::Closest) closestAnswers = *answers;
             if (occluded) occludedAnswers = *answers;
         }
+        // Without a build there is nothing to traverse: the traversals are not started either,
+        // whatever they did with the empty structure.
+        if (structure.status == TestStatus::NotStarted)
+            for (TestResult& t : hitTests) failLike(t, structure, structure.reason);
         bool hitsRight = allAnswered && wrongHits == 0;
 
         // Reference values: recorded from a correct reference, otherwise read for comparison.
@@ -262,8 +266,10 @@ TestGroup structureSceneGroup(const StructurePlugin& plugin, std::shared_ptr<Pre
         }
 
         TestResult visits = result("visit-order");
-        if (!plugin.visitsTask.empty())
+        if (!plugin.visitsTask.empty()) {
             scoreVisitOrder(report ? &*report : nullptr, run.phases.back(), *scene, *visitRays, visits, tag);
+            if (structure.status == TestStatus::NotStarted) failLike(visits, structure, structure.reason);
+        }
 
         results.push_back(std::move(structure));
         if (plugin.cost) results.push_back(std::move(cost));

@@ -141,6 +141,18 @@ struct Grading {
     std::string id, assignment;
     fs::path submission, json;
     std::vector<nlohmann::json> entries;  // the mutants or recipes in this submission
+
+    // The tests the entries are judged by, for --test; empty (every test) when a recipe must
+    // earn all of its assignment's points.
+    std::set<std::string> judgedTests() const {
+        std::set<std::string> names;
+        for (const nlohmann::json& entry : entries) {
+            if (entry.value("full_marks", false)) return {};
+            for (const auto& expected : entry.value("must_fail", nlohmann::json::array())) names.insert(expected.at("test").get<std::string>());
+            for (const auto& name : entry.value("must_pass", nlohmann::json::array())) names.insert(name.get<std::string>());
+        }
+        return names;
+    }
 };
 
 void addEntry(Grading& g, const nlohmann::json& entry) {
@@ -183,7 +195,14 @@ std::vector<Grading> assemble(const std::vector<nlohmann::json>& entries, const 
     return gradings;
 }
 
-// Grades every submission with rtlab-grader, two at a time (the CI machines have two cores).
+// Grades every submission with rtlab-grader, two at a time (the CI machines have two cores), on
+// the tests its entries are judged by.
+std::string testPatterns(const Grading& g) {
+    std::string patterns;
+    for (const std::string& name : g.judgedTests()) patterns += " --test '" + name + "'";
+    return patterns;
+}
+
 void gradeAll(const std::vector<Grading>& gradings, const fs::path& work) {
     fs::create_directories(work / "reports");
     std::atomic<size_t> next{0};
@@ -194,7 +213,7 @@ void gradeAll(const std::vector<Grading>& gradings, const fs::path& work) {
             std::string command;
             for (const std::string& piece :
                  {std::string("'"), (kBinary / "rtlab-grader").string(), std::string("' grade --submission '"), g.submission.string(),
-                  "' --assignment " + g.assignment + " --json '", g.json.string(), std::string("' --quiet --root '"), kSource.string(),
+                  "' --assignment " + g.assignment + testPatterns(g) + " --json '", g.json.string(), std::string("' --quiet --root '"), kSource.string(),
                   std::string("' --models '"), (kBinary / "models").string(), std::string("' --work '"), (work / "grading" / g.id).string(),
                   std::string("' > '"), (work / "reports" / (g.id + ".log")).string(), std::string("' 2>&1")})
                 command += piece;

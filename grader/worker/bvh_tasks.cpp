@@ -47,7 +47,8 @@ void runBvhBuild(ByteReader& input, ByteWriter& output, WorkerState& state) {
     state.scene = readScene(input);
     auto options = input.get<BvhOptions>();
     state.primitives = std::make_unique<PrimitiveSet>(state.scene);
-    const Bvh& bvh = state.structure.emplace<Bvh>(buildBvh(buildPrimitivesOf(*state.primitives), options));
+    Bvh& bvh = state.structure.emplace<Bvh>();  // queries after a build that threw see an empty tree
+    bvh = buildBvh(buildPrimitivesOf(*state.primitives), options);
     output.putVector(bvh.nodes);
     output.putVector(bvh.primIndices);
 }

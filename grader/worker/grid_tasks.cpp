@@ -83,7 +83,8 @@ void runGridBuild(ByteReader& input, ByteWriter& output, WorkerState& state) {
         options.maxResolution > kMaxFrameResolution)
         throw WireError("bad grid options");
     state.primitives = std::make_unique<PrimitiveSet>(state.scene);
-    UniformGrid& grid = state.structure.emplace<UniformGrid>(gridFrame(state.primitives->allBounds(), options));
+    UniformGrid& grid = state.structure.emplace<UniformGrid>();  // queries after a build that threw see an empty grid
+    grid = gridFrame(state.primitives->allBounds(), options);
     fillGridCells(grid, state.primitives->allBounds());
     output.put(GridFrame{grid.bounds, grid.resolution, grid.cellWidth, grid.inverseWidth});
     output.putVector(grid.cellStart);

@@ -24,7 +24,9 @@ struct WorkerState {
     std::any structure;
 };
 
-// The structure a build phase left, or a WireError when the phases came in the wrong order.
+// The structure a build phase left (build tasks emplace an empty one before calling the
+// student's build, so a build that threw leaves it empty), or a WireError when no build phase
+// came first.
 template <typename T>
 const T& builtStructure(const WorkerState& state) {
     const T* built = std::any_cast<T>(&state.structure);

@@ -72,6 +72,17 @@ grep -q "a2_sah" "$work/stderr" && fail "a default render names an a2 stub befor
 run 0 "a default render" "$solution" render "$scene" -o "$work/view.png"
 [ -s "$work/stderr" ] && fail "a default render of the reference printed on stderr"
 
+# Grading a few tests by name: only they run and are listed; a pattern nothing matches is an
+# error, not an empty report.
+run 0 "grade --test" "$solution" grade --assignment a0 --test 'a0/slab/*' --test '*/sphere/cases' --json "$work/some.json" --quiet
+python3 - "$work/some.json" <<'PY' || fail "grade --test listed other tests, or not these"
+import json, sys
+names = sorted(t["name"] for t in json.load(open(sys.argv[1]))["tests"])
+assert names == ["a0/slab/face-planes", "a0/slab/flat-boxes", "a0/slab/interval", "a0/slab/shared-edge-property", "a0/sphere/cases"], names
+PY
+run 1 "grade --test matching nothing" "$solution" grade --assignment a0 --test 'a9/*'
+one_line "--test: no test of the graded assignments matches" "grade --test matching nothing"
+
 if [ "$failures" -ne 0 ]; then
     echo "$failures failures"
     exit 1
