@@ -71,7 +71,8 @@ StructurePlugin bvhPlugin(const BvhConfig& config) {
     plugin.check = [config](const PhaseOutcome& build, const std::vector<Bounds3f>& primBounds, CheckScope scope) {
         return checkBvh(config, build, primBounds, scope);
     };
-    plugin.cost = CostTest{"sah-cost", "SAH cost", config.exactSah ? kExactSahTolerance : kSahTolerance};
+    plugin.cost = config.exactSah ? CostTest{"sah-cost", "SAH cost", kExactSahTolerance, "must match exactly"}
+                                  : CostTest{"sah-cost", "SAH cost", kSahTolerance, "within 1e-4 relative"};
     if (config.visitOrder) {
         plugin.visitsTask = worker::kTaskBvhVisits;
         plugin.visitsStub = kStubOrdered;

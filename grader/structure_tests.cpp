@@ -81,8 +81,7 @@ void scoreCost(const CostTest& test, double cost, const std::optional<StructureR
         markFailed(result, reference ? "the reference data has no " + test.what : whyNot);
         return;
     }
-    std::string line = tag + test.what + " " + formatNumber(cost) + ", reference " + formatNumber(*reference->cost) + " (" +
-                       (test.tolerance < 1e-9 ? "must match exactly" : "within " + formatNumber(test.tolerance) + " relative") + ")";
+    std::string line = tag + test.what + " " + formatNumber(cost) + ", reference " + formatNumber(*reference->cost) + " (" + test.rule + ")";
     if (std::abs(cost - *reference->cost) <= test.tolerance * std::abs(*reference->cost)) {
         markPassed(result, line);
     } else {

@@ -45,6 +45,7 @@ struct CostTest {
     std::string name;        // "sah-cost"
     std::string what;        // "SAH cost", in verdicts
     double tolerance = 0.0;  // relative to the reference value
+    std::string rule;        // the tolerance in words for verdicts: "within 1e-4 relative"
 };
 
 struct StructurePlugin {
