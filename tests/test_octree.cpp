@@ -6,6 +6,8 @@
 #include "framework/accel/octree/octree_accelerator.h"
 #include "framework/core/pcg32.h"
 #include "framework/interface/a4_octree.h"
+#include "framework/render/renderer.h"
+#include "framework/scene/camera.h"
 #include "grader/octree_oracle.h"
 #include "grader/octree_structure.h"
 #include "grader/octree_visit_order.h"
@@ -250,4 +252,36 @@ TEST_CASE("the memory rule: 70000 copies of one triangle make one leaf") {
         TraversalStats stats;
         CHECK(built.octree.intersect(makeRay({0.25f, 0.25f, 1}, {0, 0, -1}), stats).t == 1.0f);
     }
+}
+
+TEST_CASE("the steps AOV counts the octree leaves each camera ray enters") {
+    Scene scene = icosphereScene(3);
+    PrimitiveSet primitives(scene);
+    OctreeOptions options;
+    options.maxPrims = 2;
+    OctreeAccelerator octree(options);
+    octree.build(primitives);
+    Camera camera;
+    camera.position = DVec3(0.3, 0.2, 4.0);
+    RenderSettings settings;
+    settings.width = 24;
+    settings.height = 18;
+    settings.aovs = {Aov::Steps};
+    settings.progress = false;
+    RenderResult result = Renderer(scene, camera, octree).render(settings);
+    size_t entering = 0;
+    for (int y = 0; y < settings.height; ++y)
+        for (int x = 0; x < settings.width; ++x) {
+            Ray ray = camera.generateRay(x, y, settings.width, settings.height);
+            std::vector<uint32_t> leaves;
+            TraversalStats stats;
+            Traversal traversal(primitives, ray, stats);
+            traversal.listLeavesIn(&leaves);
+            Hit hit;
+            intersectOctree(octree.octree(), traversal, hit);
+            CHECK(result.aovs.steps[size_t(y) * settings.width + x] == leaves.size());
+            entering += leaves.empty() ? 0 : 1;
+        }
+    CHECK(entering > 100);
+    CHECK(maxCount(result.aovs.steps) > 1);
 }
