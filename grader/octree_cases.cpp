@@ -125,7 +125,7 @@ std::vector<BuildCase> buildCases() {
 
 OctreeOptions stressOptions() { return options(1, 10); }
 
-std::vector<StressScene> octreeStressScenes() {
+std::vector<OctreeStressScene> octreeStressScenes() {
     // Two small anchors in opposite corners make the root [0,1]^3 (ids 0 and 1).
     auto unitCube = [] {
         SceneBuilder b;
@@ -133,7 +133,7 @@ std::vector<StressScene> octreeStressScenes() {
         b.addTriangle({1, 1, 1}, {0.9375f, 1, 1}, {1, 0.9375f, 1});
         return b;
     };
-    std::vector<StressScene> scenes;
+    std::vector<OctreeStressScene> scenes;
     {
         // 2: OCT-01's X at z = 0.75 across x = 0.5; at y = 0.25 it spans x in [0.375, 0.625], at
         // y = 0.49 x in [0.495, 0.505]. 3: under (0.49, 0.49) at z = 0.5 (x + y <= 1 there).
@@ -181,7 +181,7 @@ std::vector<StressScene> octreeStressScenes() {
             };
             b.addTriangle(flip({1, 0.625f, 0.625f}), flip({0.625f, 1, 0.625f}), flip({0.625f, 0.625f, 1}));
         }
-        std::vector<StressRay> rays;
+        std::vector<OctreeStressRay> rays;
         for (int octant = 0; octant < 8; ++octant) {
             Vec3 d(octant & 4 ? 1.0f : -1.0f, octant & 2 ? 1.0f : -1.0f, octant & 1 ? 1.0f : -1.0f);
             rays.push_back({"OCT-04 from the centre along (" + std::to_string(int(d.x)) + ", " + std::to_string(int(d.y)) + ", " +

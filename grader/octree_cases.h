@@ -24,21 +24,21 @@ struct BuildCase {
 // empty scene, and a triangle with a NaN vertex among valid ones.
 std::vector<BuildCase> buildCases();
 
-struct StressRay {
+struct OctreeStressRay {
     std::string id;
     Ray ray;
     uint32_t prim;  // kNoHit: a miss
     float t;        // when hit; exact (dyadic inputs) up to the triangle test's rounding
 };
 
-struct StressScene {
+struct OctreeStressScene {
     std::string id;
     Scene scene;  // the root is [0,1]^3, forced by two anchor triangles (ids 0 and 1)
-    std::vector<StressRay> rays;
+    std::vector<OctreeStressRay> rays;
 };
 
 // Built with maxPrims = 1 so that the walks cross many leaves and mid-planes.
-std::vector<StressScene> octreeStressScenes();
+std::vector<OctreeStressScene> octreeStressScenes();
 OctreeOptions stressOptions();
 
 }  // namespace rtlab::grader

@@ -1,19 +1,12 @@
 #include "grader/octree_structure.h"
 
 #include "grader/octree_oracle.h"
+#include "grader/truth_table.h"
 
 #include <algorithm>
-#include <cstdio>
 
 namespace rtlab::grader {
 namespace {
-
-std::string describe(const Bounds3f& b) {
-    char buffer[160];
-    std::snprintf(buffer, sizeof buffer, "[(%.9g, %.9g, %.9g), (%.9g, %.9g, %.9g)]", b.lower.x, b.lower.y, b.lower.z,
-                  b.upper.x, b.upper.y, b.upper.z);
-    return buffer;
-}
 
 std::string listOf(const std::vector<uint32_t>& prims) {
     std::string text;
@@ -43,8 +36,8 @@ public:
         root.sure = root.possible;  // the root holds every placeable primitive, untested
         Bounds3f expected = expectedRootBox(bounds);
         if (!(octree_.root == expected)) {
-            problem("the root box is " + describe(octree_.root) + "; octreeRootBox of the primitives' bounds " + describe(bounds) +
-                    " is " + describe(expected));
+            problem("the root box is " + describeBox(octree_.root) + "; octreeRootBox of the primitives' bounds " + describeBox(bounds) +
+                    " is " + describeBox(expected));
             return;
         }
         if (octree_.nodes.empty()) {
@@ -65,10 +58,16 @@ private:
         ++report_.problemCount;
     }
 
+    // A primitive the build deals to a node's box: surely when it overlaps even the box shrunk by
+    // the slack (a box: the box itself), possibly when it overlaps it grown by the slack; the
+    // build's insertionBox lies between.
     Overlap overlap(uint32_t prim, const Bounds3f& box) const {
         if (options_.insertion == OctreeInsertion::Exact && !scene_.isSphere(prim))
             return triangleBoxOverlap(scene_.triangleVertices(prim), box, slack_);
-        return boxesOverlap(scene_.primitiveBounds(prim), box) ? Overlap::Yes : Overlap::No;
+        const Bounds3f& bounds = scene_.primitiveBounds(prim);
+        if (boxesOverlap(bounds, box)) return Overlap::Yes;
+        Bounds3f grown(box.lower - Vec3(float(slack_)), box.upper + Vec3(float(slack_)));
+        return boxesOverlap(bounds, grown) ? Overlap::Unsure : Overlap::No;
     }
 
     Reach reachOf(const Bounds3f& box, const std::vector<uint32_t>& candidates) {
@@ -95,7 +94,7 @@ private:
     void node(uint32_t index, const Bounds3f& box, int depth, const Reach& reach) {
         const OctreeNode& n = octree_.nodes[index];
         report_.depth = std::max(report_.depth, depth);
-        const std::string where = "node " + std::to_string(index) + " (depth " + std::to_string(depth) + ", box " + describe(box) + ")";
+        const std::string where = "node " + std::to_string(index) + " (depth " + std::to_string(depth) + ", box " + describeBox(box) + ")";
         if (n.isLeaf()) return leaf(n, box, depth, reach, where);
         if (depth >= options_.maxDepth) return problem(where + " is split, but it lies at maxDepth " + std::to_string(options_.maxDepth));
         if (n.firstChild != nextBlock_)

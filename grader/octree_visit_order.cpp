@@ -69,7 +69,8 @@ public:
             order.push_back(c.leaf);
             const OctreeNode& leaf = octree_.nodes[c.leaf];
             for (uint32_t i = leaf.primStart; i < leaf.primStart + leaf.primCount; ++i)
-                if (std::optional<OracleHit> hit = oracle.intersect(octree_.primIndices[i], ray_)) {
+                // Hits up to the margin outside an edge too: float may find one there.
+                if (std::optional<OracleHit> hit = oracle.intersect(octree_.primIndices[i], ray_, kHitEdgeMargin)) {
                     if (hit->edgeMargin < kHitEdgeMargin) return std::nullopt;
                     best = std::min(best, hit->t);
                 }

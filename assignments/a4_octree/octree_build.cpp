@@ -11,10 +11,10 @@
 //       root = octreeRootBox(union of the boxes with isPlaceable); it holds every placeable
 //       primitive in increasing id order. For a node with n primitives at depth d:
 //         leaf  if n <= options.maxPrims or d == options.maxDepth;
-//         else  child k gets, in order, the primitives that overlap childBox(box, k): a
-//               triangle (id < input.triangles.size()) by triangleOverlapsBox when
-//               options.insertion == Exact, everything else by its bounding box
-//               (lower <= other.upper and upper >= other.lower on each axis);
+//         else  child k gets, in order, the primitives that overlap
+//               insertionBox(childBox(box, k)): a triangle (id < input.triangles.size())
+//               by triangleOverlapsBox when options.insertion == Exact, everything else by
+//               its bounding box (lower <= other.upper and upper >= other.lower on each axis);
 //         leaf  also when two or more children would get all n (the memory rule).
 //       A split node appends its 8 children to nodes at once (child k at firstChild + k),
 //       then builds child 0 completely, then child 1, ... A leaf sets primStart =

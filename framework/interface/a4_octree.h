@@ -43,10 +43,11 @@ int childIndex(const Vec3& p, const Vec3& mid);
 //     primitive, in increasing id order; the others go nowhere.
 //   * A node with n primitives at depth d (the root at 0) is a leaf when n <= options.maxPrims
 //     or d == options.maxDepth. Otherwise its primitives are dealt to its eight children: child
-//     k receives, in the parent's order, each primitive that overlaps childBox(box, k): a
-//     triangle when triangleOverlapsBox (OctreeInsertion::Exact) or when its bounding box does
-//     (Box), a sphere when its bounding box does. Boxes overlap when lower[a] <= other.upper[a]
-//     and upper[a] >= other.lower[a] on every axis (touching counts).
+//     k receives, in the parent's order, each primitive that overlaps insertionBox(childBox(box,
+//     k)) (octree.h: the child's box grown by 2^-20 of its scale): a triangle when
+//     triangleOverlapsBox (OctreeInsertion::Exact) or when its bounding box does (Box), a
+//     sphere when its bounding box does. Boxes overlap when lower[a] <= other.upper[a] and
+//     upper[a] >= other.lower[a] on every axis (touching counts).
 //   * The memory rule: a node whose split would give all n of its primitives to two or more
 //     children stays a leaf (splitting it separates nothing and only copies references).
 //   * Layout: a split node gets its eight children appended to nodes as one block at once

@@ -25,7 +25,8 @@ public:
         std::array<std::vector<uint32_t>, kOctreeChildren> children;
         int holdingAll = 0;
         for (int k = 0; k < kOctreeChildren; ++k) {
-            Bounds3f child = childBox(box, k);
+            // Slightly grown, so that rounding never leaves out a primitive touching the child.
+            Bounds3f child = insertionBox(childBox(box, k));
             for (uint32_t prim : prims)
                 if (overlaps(prim, child)) children[k].push_back(prim);
             holdingAll += children[k].size() == prims.size() ? 1 : 0;

@@ -13,7 +13,7 @@ void keepOverlappingTriangles(UniformGrid& grid, const PrimitiveSet& primitives)
         for (int y = 0; y < grid.resolution[1]; ++y)
             for (int x = 0; x < grid.resolution[0]; ++x) {
                 size_t c = grid.cellIndex({x, y, z});
-                Bounds3f box = gridCellBox(grid, {x, y, z});
+                Bounds3f box = insertionBox(gridCellBox(grid, {x, y, z}));
                 uint32_t begin = grid.cellStart[c], end = grid.cellStart[c + 1];
                 grid.cellStart[c] = kept;
                 for (uint32_t i = begin; i < end; ++i) {
