@@ -150,9 +150,10 @@ VisitOrderVerdict judgeOctreeVisits(const Octree& octree, const Scene& scene, co
         if (got == *expected) continue;
         size_t k = 0;
         while (k < got.size() && k < expected->size() && got[k] == (*expected)[k]) ++k;
-        std::string what = k == expected->size() ? "entered " + describeLeaves(got, k) + " after the last leaf it needed (node " +
-                                                       std::to_string(expected->back()) + "), where the closest hit was already found"
-                           : k == got.size()     ? "stopped after " + std::to_string(k) + " leaves; it had still to enter " +
+        std::string what = expected->empty()        ? "entered " + describeLeaves(got, 0) + "; the segment crosses no leaf"
+                           : k == expected->size() ? "entered " + describeLeaves(got, k) + " after the last leaf it needed (node " +
+                                                         std::to_string(expected->back()) + "), where the closest hit was already found"
+                           : k == got.size()       ? "stopped after " + std::to_string(k) + " leaves; it had still to enter " +
                                                    describeLeaves(*expected, k)
                                                  : "leaf " + std::to_string(k) + " of its walk is node " + std::to_string(got[k]) +
                                                    ", front to back it is node " + std::to_string((*expected)[k]);

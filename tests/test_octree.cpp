@@ -155,11 +155,11 @@ TEST_CASE("the reference builds the hand-derived octrees of the build cases") {
 }
 
 TEST_CASE("OCT-01 .. OCT-05: the reference finds the hand-derived hits") {
-    for (grader::StressScene& s : grader::octreeStressScenes()) {
+    for (grader::OctreeStressScene& s : grader::octreeStressScenes()) {
         CAPTURE(s.id);
         Built built(std::move(s.scene), grader::stressOptions());
         REQUIRE(built.octree.octree().root == Bounds3f(Vec3(0.0f), Vec3(1.0f)));
-        for (const grader::StressRay& c : s.rays) {
+        for (const grader::OctreeStressRay& c : s.rays) {
             CAPTURE(c.id);
             TraversalStats stats;
             Hit hit = built.octree.intersect(c.ray, stats);
@@ -239,4 +239,17 @@ TEST_CASE("the steps AOV counts the octree leaves each camera ray enters") {
         }
     CHECK(entering > 100);
     CHECK(maxCount(result.aovs.steps) > 1);
+}
+
+TEST_CASE("the leaf-order judge names leaves entered by a ray that crosses none") {
+    Scene scene = soup(200, 31);
+    PrimitiveSet primitives(scene);
+    OctreeAccelerator octree{OctreeOptions{}};
+    octree.build(primitives);
+    Ray away = makeRay(Vec3(5.0f), Vec3(1.0f));  // leaves the unit cube behind
+    grader::VisitOrderVerdict verdict = grader::judgeOctreeVisits(octree.octree(), scene, {away}, {{1, 2}});
+    CHECK(verdict.graded == 1);
+    CHECK(verdict.wrong == 1);
+    REQUIRE(verdict.problems.size() == 1);
+    CHECK(verdict.problems.front().find("crosses no leaf") != std::string::npos);
 }
