@@ -67,12 +67,15 @@ PhaseState phaseState(const PhaseOutcome& outcome, TestResult& result, std::stri
 
 std::string expectedGot(const std::string& expected, const std::string& got) { return "expected " + expected + ", got " + got; }
 
-// A truth-table group of one phase: each case's call on the wire, its answer read back and
-// judged. Case: {id, call, expected}; Answer read by `read`, described by `describe`.
-template <typename Case, typename Answer, typename Read, typename Describe>
+// A truth-table group of one phase: every case's `call` on the wire (after `input`, what the
+// calls share), each answer read back and judged against the case's `expected`.
+template <typename Answer, typename Case, typename Read, typename Describe>
 TestGroup truthTable(const char* title, const char* test, const char* stub, const char* task, std::vector<Case> list, ByteWriter input,
                      Read read, Describe describe) {
     auto cases = std::make_shared<std::vector<Case>>(std::move(list));
+    std::vector<decltype(Case::call)> calls;
+    for (const Case& c : *cases) calls.push_back(c.call);
+    input.putVector(calls);
     TestGroup group{kA4, title, {makePhase(stub, task, std::move(input))}, {}};
     group.score = [cases, test, read, describe](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult result = makeResult(kA4, test);
@@ -101,7 +104,7 @@ std::string childText(int32_t k) { return k == kOctreeEnd ? std::string("kOctree
 
 struct RootBoxCase {
     const char* id;
-    Bounds3f bounds;
+    Bounds3f call;  // the primitives' bounds
     Bounds3f expected;
 };
 
@@ -167,37 +170,12 @@ std::vector<ChildIndexCase> childIndexCases() {
 }
 
 std::vector<TestGroup> boxGroups() {
-    std::vector<TestGroup> groups;
-    {
-        std::vector<RootBoxCase> cases = rootBoxCases();
-        std::vector<Bounds3f> calls;
-        for (const RootBoxCase& c : cases) calls.push_back(c.bounds);
-        ByteWriter input;
-        input.putVector(calls);
-        groups.push_back(truthTable<RootBoxCase, Bounds3f>("a4 root box", "a4/boxes/root-box", kStubRootBox, worker::kTaskOctreeRootBox,
-                                                            cases, std::move(input), readPlain<Bounds3f>, describeBox));
-    }
-    {
-        std::vector<ChildBoxCase> cases = childBoxCases();
-        std::vector<worker::ChildBoxCall> calls;
-        for (const ChildBoxCase& c : cases) calls.push_back(c.call);
-        ByteWriter input;
-        input.putVector(calls);
-        groups.push_back(truthTable<ChildBoxCase, Bounds3f>("a4 child box", "a4/boxes/child-box", kStubChildBox,
-                                                             worker::kTaskOctreeChildBox, cases, std::move(input), readPlain<Bounds3f>,
-                                                             describeBox));
-    }
-    {
-        std::vector<ChildIndexCase> cases = childIndexCases();
-        std::vector<worker::ChildIndexCall> calls;
-        for (const ChildIndexCase& c : cases) calls.push_back(c.call);
-        ByteWriter input;
-        input.putVector(calls);
-        groups.push_back(truthTable<ChildIndexCase, int32_t>("a4 child index", "a4/boxes/child-index", kStubChildIndex,
-                                                              worker::kTaskOctreeChildIndex, cases, std::move(input), readPlain<int32_t>,
-                                                              childText));
-    }
-    return groups;
+    return {truthTable<Bounds3f>("a4 root box", "a4/boxes/root-box", kStubRootBox, worker::kTaskOctreeRootBox, rootBoxCases(), ByteWriter(),
+                                 readPlain<Bounds3f>, describeBox),
+            truthTable<Bounds3f>("a4 child box", "a4/boxes/child-box", kStubChildBox, worker::kTaskOctreeChildBox, childBoxCases(), ByteWriter(),
+                                 readPlain<Bounds3f>, describeBox),
+            truthTable<int32_t>("a4 child index", "a4/boxes/child-index", kStubChildIndex, worker::kTaskOctreeChildIndex, childIndexCases(),
+                                ByteWriter(), readPlain<int32_t>, childText)};
 }
 
 // --- Triangle and box ---------------------------------------------------------------------------
@@ -432,56 +410,24 @@ std::vector<NextNodeCase> nextNodeCases() {
     };
 }
 
+// The calls of mirrorRay and rootSpan share the root they are made on.
+ByteWriter rootFirst(const Bounds3f& root) {
+    ByteWriter input;
+    input.put(root);
+    return input;
+}
+
 std::vector<TestGroup> walkGroups() {
-    std::vector<TestGroup> groups;
-    {
-        std::vector<MirrorCase> cases = mirrorCases();
-        std::vector<Ray> calls;
-        for (const MirrorCase& c : cases) calls.push_back(c.call);
-        ByteWriter input;
-        input.put(kMirrorRoot);
-        input.putVector(calls);
-        groups.push_back(truthTable<MirrorCase, MirroredRay>("a4 mirroring", "a4/walk/mirror", kStubMirror, worker::kTaskOctreeMirror, cases,
-                                                              std::move(input), readPlain<MirroredRay>, mirrorText));
-    }
-    {
-        std::vector<SpanCase> cases = spanCases();
-        std::vector<Ray> calls;
-        for (const SpanCase& c : cases) calls.push_back(c.call);
-        ByteWriter input;
-        input.put(Bounds3f(Vec3(0.0f), Vec3(1.0f)));
-        input.putVector(calls);
-        groups.push_back(truthTable<SpanCase, NodeSpan>("a4 root span", "a4/walk/root-span", kStubRootSpan, worker::kTaskOctreeRootSpan, cases,
-                                                         std::move(input), readPlain<NodeSpan>, spanText));
-    }
-    {
-        std::vector<MidCase> cases = midCases();
-        std::vector<worker::MidCall> calls;
-        for (const MidCase& c : cases) calls.push_back(c.call);
-        ByteWriter input;
-        input.putVector(calls);
-        groups.push_back(truthTable<MidCase, Vec3>("a4 mid-plane parameters", "a4/walk/mid-parameters", kStubMid, worker::kTaskOctreeMid, cases,
-                                                    std::move(input), readPlain<Vec3>, describeVec));
-    }
-    {
-        std::vector<FirstNodeCase> cases = firstNodeCases();
-        std::vector<worker::FirstNodeCall> calls;
-        for (const FirstNodeCase& c : cases) calls.push_back(c.call);
-        ByteWriter input;
-        input.putVector(calls);
-        groups.push_back(truthTable<FirstNodeCase, int32_t>("a4 first node", "a4/walk/first-node", kStubFirst, worker::kTaskOctreeFirstNode,
-                                                             cases, std::move(input), readPlain<int32_t>, childText));
-    }
-    {
-        std::vector<NextNodeCase> cases = nextNodeCases();
-        std::vector<worker::NextNodeCall> calls;
-        for (const NextNodeCase& c : cases) calls.push_back(c.call);
-        ByteWriter input;
-        input.putVector(calls);
-        groups.push_back(truthTable<NextNodeCase, int32_t>("a4 next node", "a4/walk/next-node", kStubNext, worker::kTaskOctreeNextNode, cases,
-                                                            std::move(input), readPlain<int32_t>, childText));
-    }
-    return groups;
+    return {truthTable<MirroredRay>("a4 mirroring", "a4/walk/mirror", kStubMirror, worker::kTaskOctreeMirror, mirrorCases(),
+                                    rootFirst(kMirrorRoot), readPlain<MirroredRay>, mirrorText),
+            truthTable<NodeSpan>("a4 root span", "a4/walk/root-span", kStubRootSpan, worker::kTaskOctreeRootSpan, spanCases(),
+                                 rootFirst(Bounds3f(Vec3(0.0f), Vec3(1.0f))), readPlain<NodeSpan>, spanText),
+            truthTable<Vec3>("a4 mid-plane parameters", "a4/walk/mid-parameters", kStubMid, worker::kTaskOctreeMid, midCases(), ByteWriter(),
+                             readPlain<Vec3>, describeVec),
+            truthTable<int32_t>("a4 first node", "a4/walk/first-node", kStubFirst, worker::kTaskOctreeFirstNode, firstNodeCases(), ByteWriter(),
+                                readPlain<int32_t>, childText),
+            truthTable<int32_t>("a4 next node", "a4/walk/next-node", kStubNext, worker::kTaskOctreeNextNode, nextNodeCases(), ByteWriter(),
+                                readPlain<int32_t>, childText)};
 }
 
 // --- Whole octrees ------------------------------------------------------------------------------

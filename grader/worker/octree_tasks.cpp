@@ -84,19 +84,9 @@ void runQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
 // The visit-order test judges these lists: the leaves in the order the walk entered them.
 void runLeaves(ByteReader& input, ByteWriter& output, WorkerState& state) {
     const Octree& octree = builtStructure<Octree>(state);
-    std::vector<uint32_t> entered;
-    for (const Ray& ray : input.getVector<Ray>(kMaxRays)) {
-        TraversalStats stats;
-        Traversal traversal(*state.primitives, ray, stats);
-        entered.clear();
-        traversal.listLeavesIn(&entered);
-        Hit hit;
-        hit.t = ray.tMax;
-        intersectOctree(octree, traversal, hit);
-        auto n = static_cast<uint32_t>(std::min<size_t>(entered.size(), kMaxListedLeaves));
-        output.put<uint32_t>(n);
-        for (uint32_t i = 0; i < n; ++i) output.put<uint32_t>(entered[i]);
-    }
+    writeListsPerRay(
+        *state.primitives, input.getVector<Ray>(kMaxRays), kMaxListedLeaves, output,
+        [](Traversal& t, std::vector<uint32_t>* list) { t.listLeavesIn(list); }, [&](Traversal& t, Hit& hit) { intersectOctree(octree, t, hit); });
 }
 
 const TaskRegistration registration{{kTaskOctreeRootBox, runRootBox},     {kTaskOctreeChildBox, runChildBox},
