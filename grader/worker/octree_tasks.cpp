@@ -64,8 +64,8 @@ void runBuild(ByteReader& input, ByteWriter& output, WorkerState& state) {
         (options.insertion != OctreeInsertion::Exact && options.insertion != OctreeInsertion::Box))
         throw WireError("bad octree options");
     state.primitives = std::make_unique<PrimitiveSet>(state.scene);
-    const Octree& octree = state.structure.emplace<Octree>(
-        buildOctree(OctreeInput{state.primitives->allBounds(), state.primitives->allTriangles()}, options));
+    Octree& octree = state.structure.emplace<Octree>();  // queries after a build that threw see an empty octree
+    octree = buildOctree(OctreeInput{state.primitives->allBounds(), state.primitives->allTriangles()}, options);
     output.put(octree.root);
     output.putVector(octree.nodes);
     output.putVector(octree.primIndices);

@@ -17,6 +17,7 @@ public:
 
     // Walks the octree; for any-hit, returns whether a primitive blocks the ray.
     bool run() {
+        if (octree_.nodes.empty()) return false;  // never built: not even a root
         NodeSpan span = rootSpan(octree_.root, mirrored_.ray);
         // NaN (from a NaN origin or direction) would slip through max and min: a miss.
         if (glm::any(glm::isnan(span.t0)) || glm::any(glm::isnan(span.t1))) return false;
