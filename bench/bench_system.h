@@ -43,6 +43,9 @@ public:
     virtual std::optional<double> sahCost() const = 0;
     // Memory of the built structure (without the input triangles), divided by the triangles.
     virtual double bytesPerTriangle() const = 0;
+    // Primitive references the built structure keeps per triangle (1 for a BVH, more where a
+    // spatial partition lists a triangle in several cells or leaves); none where not known.
+    virtual std::optional<double> referencesPerTriangle() const = 0;
 };
 
 }  // namespace rtlab::bench

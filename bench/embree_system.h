@@ -28,6 +28,7 @@ public:
     bool countsWork() const override { return false; }
     std::optional<double> sahCost() const override { return std::nullopt; }
     double bytesPerTriangle() const override { return bytesPerTriangle_; }
+    std::optional<double> referencesPerTriangle() const override { return std::nullopt; }
 
 private:
     void useDevice(int threads);

@@ -68,8 +68,8 @@ void writeMarkdown(std::ostream& out, const std::vector<ThroughputRecord>& recor
             << " at the start)\n\n";
         out << "| system | build ms 1T | build ms 2T | primary 1T | incoherent 1T | primary 2T | incoherent 2T "
                "| × Embree MEDIUM prim/inc 1T | SAH cost | node visits/ray prim/inc | cells/ray prim/inc "
-               "| prim tests/ray prim/inc | bytes/tri | mismatches prim/inc |\n";
-        out << "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
+               "| prim tests/ray prim/inc | bytes/tri | refs/tri | mismatches prim/inc |\n";
+        out << "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
         for (const std::string& system : systemsInOrder(records, scene)) {
             const ThroughputRecord* p1 = find(records, scene, system, RayKind::Primary, 1);
             const ThroughputRecord* i1 = find(records, scene, system, RayKind::Incoherent, 1);
@@ -77,7 +77,7 @@ void writeMarkdown(std::ostream& out, const std::vector<ThroughputRecord>& recor
             const ThroughputRecord* i2 = find(records, scene, system, RayKind::Incoherent, 2);
             if (!p1 || !i1 || !p2 || !i2) continue;
             if (!p1->measured) {
-                out << "| " << system << " | " << p1->note << " ||||||||||||\n";
+                out << "| " << system << " | " << p1->note << " |||||||||||||\n";
                 continue;
             }
             auto perRay = [](const ThroughputRecord* a, const ThroughputRecord* b, auto member) {
@@ -95,6 +95,7 @@ void writeMarkdown(std::ostream& out, const std::vector<ThroughputRecord>& recor
                 << perRay(p1, i1, &ThroughputRecord::cellStepsPerRay) << " | "
                 << perRay(p1, i1, &ThroughputRecord::primitiveTestsPerRay) << " | "
                 << fixed(p1->bytesPerTriangle, 1) << " | "
+                << optionalText(p1->referencesPerTriangle, [](double v) { return fixed(v, 2); }) << " | "
                 << optionalText(p1->mismatches, [](uint64_t v) { return std::to_string(v); }) << " / "
                 << optionalText(i1->mismatches, [](uint64_t v) { return std::to_string(v); }) << " |\n";
         }
@@ -102,9 +103,12 @@ void writeMarkdown(std::ostream& out, const std::vector<ThroughputRecord>& recor
     out << "\nMrays/s: best pass, closest hit, one query per ray; 2T = total of two threads. rtlab's "
            "builders are single-threaded, so their 2T build column repeats the 1T figure. Embree does not "
            "count work in its release build (–); the wide BVHs (bvh4, bvh8) count a wide node as one visit. "
-           "Bytes per triangle: the built structure only (rtlab: 32-byte nodes + 4-byte indices; bvh4/bvh8: "
+           "Bytes per triangle: the built structure only (rtlab: the BVH's 32-byte nodes, the octree's 12-byte nodes, the grids' "
+           "4-byte cell offsets, + 4-byte indices; bvh4/bvh8: "
            "128/256-byte nodes and the triangles in leaf order, four to a 160-byte packet; Embree: what "
            "its memory monitor saw rtcCommitScene keep). "
+           "References per triangle: the primitive ids the structure lists, per triangle (a triangle in "
+           "several grid cells or octree leaves counts in each). "
            "Mismatches: rays whose hit/miss or t (|Δt| > 1e-4·max(1,t)) differ from Embree MEDIUM, 1T.\n";
 }
 
@@ -113,7 +117,7 @@ void writeCsv(const std::string& path, const std::vector<ThroughputRecord>& reco
     if (!out) throw Error(path + ": cannot open for writing");
     out << "scene,triangles,system,rays,threads,build_ms,mrays_per_s,ratio_to_embree_medium,sah_cost,"
            "node_visits_per_ray,prim_tests_per_ray,bytes_per_triangle,mismatches,hits,sum_t,load_average,note,"
-           "cell_steps_per_ray\n";
+           "cell_steps_per_ray,references_per_triangle\n";
     auto number = [](const std::optional<double>& v) { return v ? fixed(*v, 4) : std::string(); };
     for (const ThroughputRecord& r : records) {
         bool measured = r.measured;
@@ -124,7 +128,7 @@ void writeCsv(const std::string& path, const std::vector<ThroughputRecord>& reco
             << (measured ? fixed(r.bytesPerTriangle, 2) : "") << ','
             << (r.mismatches ? std::to_string(*r.mismatches) : "") << ',' << (measured ? std::to_string(r.hits) : "")
             << ',' << (measured ? fixed(r.sumT, 3) : "") << ',' << r.loadAverage << ',' << quoted(r.note) << ','
-            << number(r.cellStepsPerRay) << '\n';
+            << number(r.cellStepsPerRay) << ',' << number(r.referencesPerTriangle) << '\n';
     }
     if (!out.flush()) throw Error(path + ": write failed");
 }

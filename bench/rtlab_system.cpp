@@ -39,6 +39,11 @@ std::optional<double> RtlabSystem::sahCost() const {
     return rtlab::sahCost(accelerator_->structure());
 }
 
+std::optional<double> RtlabSystem::referencesPerTriangle() const {
+    double triangles = std::max<uint32_t>(primitives_.size(), 1);
+    return static_cast<double>(accelerator_->structure().primIndices.size()) / triangles;
+}
+
 double RtlabSystem::bytesPerTriangle() const {
     double triangles = std::max<uint32_t>(primitives_.size(), 1);
     return static_cast<double>(accelerator_->memoryBytes()) / triangles;

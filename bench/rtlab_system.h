@@ -21,6 +21,7 @@ public:
     bool countsWork() const override { return true; }
     std::optional<double> sahCost() const override;
     double bytesPerTriangle() const override;
+    std::optional<double> referencesPerTriangle() const override;
 
     const Accelerator& accelerator() const { return *accelerator_; }
 

@@ -121,6 +121,7 @@ std::vector<ThroughputRecord> runThroughput(const ThroughputOptions& options) {
                 bool parallelBuild = label.starts_with("embree:");
                 double build2 = parallelBuild ? medianBuildMs(*system, 2, repeats, false) : build1;
                 system->build(2);
+                std::optional<double> references = system->referencesPerTriangle();
                 std::cerr << " " << build1 << " ms; tracing" << std::flush;
                 // Brute force tests every triangle for every ray: it gets every 64th ray of the
                 // set and one pass, and its mismatches are counted on that subset.
@@ -156,6 +157,7 @@ std::vector<ThroughputRecord> runThroughput(const ThroughputOptions& options) {
                                 r.cellStepsPerRay = static_cast<double>(timing.stats.cellSteps) / timing.stats.rays;
                         }
                         r.bytesPerTriangle = system->bytesPerTriangle();
+                        r.referencesPerTriangle = references;
                         if (!isReference && !reference.empty()) {
                             uint64_t mismatches = 0;
                             for (size_t i = 0; i < results.size(); ++i)

@@ -38,6 +38,7 @@ struct ThroughputRecord {
     std::optional<double> primitiveTestsPerRay;
     std::optional<double> cellStepsPerRay;  // grids: cells the 3D-DDA entered
     double bytesPerTriangle = 0.0;
+    std::optional<double> referencesPerTriangle;  // rtlab's structures: references kept per triangle
     std::optional<uint64_t> mismatches;  // against Embree MEDIUM; none for Embree MEDIUM itself
     uint64_t hits = 0;
     double sumT = 0.0;

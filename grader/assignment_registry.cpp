@@ -21,6 +21,10 @@ std::vector<TestGroup> a3WithImages(GradingContext& context) {
     return withImages<a3Groups>(context, {"a3", "grid", "the renderer with --accel grid (a0 + a3 functions)"});
 }
 
+std::vector<TestGroup> a4WithImages(GradingContext& context) {
+    return withImages<a4Groups>(context, {"a4", "octree", "the renderer with --accel octree (a0 + a4 functions)"});
+}
+
 }  // namespace
 
 const std::vector<Assignment>& assignments() {
@@ -29,6 +33,7 @@ const std::vector<Assignment>& assignments() {
         {"a1", "BVH with median, middle and equal-counts splits", a1WithImages, {"a0_intersect", "a1_bvh"}},
         {"a2", "SAH: full sweep and buckets", a2Groups, {"a0_intersect", "a1_bvh", "a2_sah"}},
         {"a3", "uniform grid and 3D-DDA", a3WithImages, {"a0_intersect", "a3_grid"}},
+        {"a4", "octree: exact insertion and the parametric walk", a4WithImages, {"a0_intersect", "a4_octree"}},
     };
     return list;
 }

@@ -9,6 +9,7 @@
 #include "framework/core/error.h"
 #include "framework/core/pcg32.h"
 #include "framework/interface/a3_grid.h"
+#include "grader/octree_oracle.h"
 #include "grader/test_scenes.h"
 #include "tests/icosphere_fixture.h"
 
@@ -180,7 +181,7 @@ TEST_CASE("the grid's cells hold exactly the primitives whose boxes overlap them
         for (double c : {1.0, 27.0, 81.0}) {
             GridOptions options;
             options.cellsPerPrimitive = c;
-            GridAccelerator accelerator(options);
+            GridAccelerator accelerator(options, false);
             accelerator.build(primitives);
             const UniformGrid& grid = accelerator.grid();
             REQUIRE(grid.cellStart.size() == grid.cellCount() + 1);
@@ -206,5 +207,36 @@ TEST_CASE("the grid's cells hold exactly the primitives whose boxes overlap them
             CHECK(grid.primIndices.size() == expectedReferences);
             CHECK(found == expected);
         }
+    }
+}
+
+TEST_CASE("with exact insertion, a grid cell keeps the triangles of its box range that overlap it") {
+    for (NamedScene& named : scenes()) {
+        CAPTURE(named.name);
+        PrimitiveSet primitives(named.scene);
+        GridAccelerator boxes(GridOptions{}, false), exact(GridOptions{}, true);
+        boxes.build(primitives);
+        exact.build(primitives);
+        const UniformGrid &all = boxes.grid(), &kept = exact.grid();
+        REQUIRE(kept.cellStart.size() == all.cellStart.size());
+        double slack = grader::overlapSlack(all.bounds);
+        size_t wrong = 0, dropped = 0;
+        for (int z = 0; z < all.resolution[2]; ++z)
+            for (int y = 0; y < all.resolution[1]; ++y)
+                for (int x = 0; x < all.resolution[0]; ++x) {
+                    size_t c = all.cellIndex({x, y, z});
+                    std::set<uint32_t> have(kept.primIndices.begin() + kept.cellStart[c], kept.primIndices.begin() + kept.cellStart[c + 1]);
+                    for (uint32_t i = all.cellStart[c]; i < all.cellStart[c + 1]; ++i) {
+                        uint32_t prim = all.primIndices[i];
+                        // Spheres keep their box's cells; a triangle within rounding of touching may go either way.
+                        grader::Overlap o = primitives.triangleCount() <= prim
+                                                ? grader::Overlap::Yes
+                                                : grader::triangleBoxOverlap(primitives.triangle(prim), gridCellBox(all, {x, y, z}), slack);
+                        if (o != grader::Overlap::Unsure) wrong += have.count(prim) != (o == grader::Overlap::Yes) ? 1 : 0;
+                        dropped += have.count(prim) ? 0 : 1;
+                    }
+                }
+        CHECK(wrong == 0);
+        CHECK(kept.primIndices.size() + dropped == all.primIndices.size());
     }
 }

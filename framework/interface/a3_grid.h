@@ -78,5 +78,7 @@ bool occludedTwoLevelGrid(const TwoLevelGrid& grid, Traversal& traversal);
 UniformGrid gridFrame(std::span<const Bounds3f> primBounds, const GridOptions& options);
 // The same over a given box: the frame of a child grid.
 UniformGrid gridFrameOver(const Bounds3f& bounds, size_t primCount, const GridOptions& options);
+// The box of a cell: lower + cell * cellWidth .. lower + (cell + 1) * cellWidth, in float.
+Bounds3f gridCellBox(const UniformGrid& grid, const GridCell& cell);
 
 }  // namespace rtlab

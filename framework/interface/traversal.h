@@ -3,6 +3,7 @@
 // work a structure does:
 //   hitsBox       a box test (a BVH or octree node, the grid's bounds)
 //   countCellStep a cell the grid's 3D-DDA enters
+//   enterLeaf     a leaf a tree walk enters (the octree's), counted with the cell steps
 //   countPlaneStep a split plane a KD-tree traversal classifies the ray against
 //   intersect / occludes            a primitive test
 //   intersectOnce / occludesOnce    the same behind a mailbox: a primitive referenced from
@@ -48,6 +49,12 @@ public:
     }
 
     void countCellStep() { ++stats_.cellSteps; }
+    // A leaf of a spatial tree the walk enters, by its node index: counted as a cell step, and
+    // listed for the grader's visit-order test when a list is set.
+    void enterLeaf(uint32_t node) {
+        ++stats_.cellSteps;
+        if (entered_) entered_->push_back(node);
+    }
     void countPlaneStep() { ++stats_.planeSteps; }
 
     // One primitive test for a closest-hit query: updates hit when prim is hit in
@@ -68,6 +75,8 @@ public:
     // Lists every primitive a closest-hit query tests, in order, into *list (null: no list): the
     // grader's visit-order test reads it. The framework sets it, never student code.
     void listTestsIn(std::vector<uint32_t>* list) { tested_ = list; }
+    // Lists every leaf enterLeaf reports, in order, into *list (null: no list); the same.
+    void listLeavesIn(std::vector<uint32_t>* list) { entered_ = list; }
 
     // The mailboxed forms: a primitive this ray has tested already is not tested again (its
     // hit, if any, is in hit already) and returns false.
@@ -87,6 +96,7 @@ private:
     TraversalStats& stats_;
     Mailbox mailbox_;
     std::vector<uint32_t>* tested_ = nullptr;
+    std::vector<uint32_t>* entered_ = nullptr;
 };
 
 }  // namespace rtlab

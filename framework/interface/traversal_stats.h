@@ -9,7 +9,7 @@ namespace rtlab {
 struct TraversalStats {
     uint64_t rays = 0;
     uint64_t nodeVisits = 0;      // box tests: BVH and octree nodes, the grid's bounds
-    uint64_t cellSteps = 0;       // grid cells entered by the 3D-DDA
+    uint64_t cellSteps = 0;       // grid cells entered by the 3D-DDA, octree leaves entered
     uint64_t planeSteps = 0;      // split planes crossed or classified (KD-tree)
     uint64_t primitiveTests = 0;  // ray-primitive tests actually run
     uint64_t mailboxRepeats = 0;  // tests a mailbox skipped: the primitive was tested already

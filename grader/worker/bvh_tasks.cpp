@@ -69,19 +69,9 @@ void runBvhQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
 // judges which leaf comes first and whether a leaf is entered beyond the closest hit so far.
 void runBvhVisits(ByteReader& input, ByteWriter& output, WorkerState& state) {
     const Bvh& bvh = builtStructure<Bvh>(state);
-    std::vector<uint32_t> tested;
-    for (const Ray& ray : input.getVector<Ray>(kMaxPrimitives)) {
-        TraversalStats stats;
-        Traversal traversal(*state.primitives, ray, stats);
-        tested.clear();
-        traversal.listTestsIn(&tested);
-        Hit hit;
-        hit.t = ray.tMax;
-        intersectBvh(bvh, traversal, hit);
-        auto n = static_cast<uint32_t>(std::min<size_t>(tested.size(), kMaxListedTests));
-        output.put<uint32_t>(n);
-        for (uint32_t i = 0; i < n; ++i) output.put<uint32_t>(tested[i]);
-    }
+    writeListsPerRay(
+        *state.primitives, input.getVector<Ray>(kMaxPrimitives), kMaxListedTests, output,
+        [](Traversal& t, std::vector<uint32_t>* list) { t.listTestsIn(list); }, [&](Traversal& t, Hit& hit) { intersectBvh(bvh, t, hit); });
 }
 
 const TaskRegistration registration{{kTaskSplit, runSplitCalls},

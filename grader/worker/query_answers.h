@@ -3,8 +3,10 @@
 #pragma once
 
 #include "framework/interface/traversal.h"
+#include "grader/wire_format.h"
 #include "grader/worker/task_inputs.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace rtlab::grader::worker {
@@ -34,6 +36,27 @@ std::vector<RawQuery> answerRays(const PrimitiveSet& primitives, const std::vect
         answers.push_back(answer);
     }
     return answers;
+}
+
+// A visit-order phase's answer: per ray, the list the closest-hit traversal `closest(traversal,
+// hit)` keeps while `listIn(traversal, &list)` points it there (the primitives it tests, the
+// leaves it enters), as u32 n then n u32, cut at maxListed.
+template <typename ListIn, typename Closest>
+void writeListsPerRay(const PrimitiveSet& primitives, const std::vector<Ray>& rays, uint32_t maxListed, ByteWriter& output,
+                      ListIn&& listIn, Closest&& closest) {
+    std::vector<uint32_t> list;
+    for (const Ray& ray : rays) {
+        TraversalStats stats;
+        Traversal traversal(primitives, ray, stats);
+        list.clear();
+        listIn(traversal, &list);
+        Hit hit;
+        hit.t = ray.tMax;
+        closest(traversal, hit);
+        auto n = static_cast<uint32_t>(std::min<size_t>(list.size(), maxListed));
+        output.put<uint32_t>(n);
+        for (uint32_t i = 0; i < n; ++i) output.put<uint32_t>(list[i]);
+    }
 }
 
 }  // namespace rtlab::grader::worker

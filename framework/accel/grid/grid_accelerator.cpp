@@ -1,6 +1,7 @@
 #include "framework/accel/grid/grid_accelerator.h"
 
 #include "framework/accel/accelerator_registry.h"
+#include "framework/accel/grid/grid_exact_insertion.h"
 #include "framework/interface/a3_grid.h"
 
 namespace rtlab {
@@ -9,6 +10,7 @@ void GridAccelerator::build(const PrimitiveSet& primitives) {
     primitives_ = &primitives;
     grid_ = gridFrame(primitives.allBounds(), options_);
     fillGridCells(grid_, primitives.allBounds());
+    if (exactInsertion_) keepOverlappingTriangles(grid_, primitives);
 }
 
 Hit GridAccelerator::intersect(const Ray& ray, TraversalStats& stats) const {
@@ -38,8 +40,7 @@ StructureView GridAccelerator::structure() const {
             for (int x = 0; x < grid_.resolution[0]; ++x) {
                 size_t c = grid_.cellIndex({x, y, z});
                 StructureNode cell;
-                Vec3 lower = grid_.bounds.lower + Vec3(float(x), float(y), float(z)) * grid_.cellWidth;
-                cell.bounds = Bounds3f(lower, lower + grid_.cellWidth);
+                cell.bounds = gridCellBox(grid_, {x, y, z});
                 cell.firstPrim = grid_.cellStart[c];
                 cell.primCount = grid_.cellStart[c + 1] - grid_.cellStart[c];
                 view.children.push_back(static_cast<uint32_t>(view.nodes.size()));
@@ -52,14 +53,16 @@ AcceleratorType gridType() {
     return {"grid",
             "uniform grid with the 3D-DDA (a3)",
             {{"C", "cells per primitive: the lecture's rule cells ~= C * N", "27", 1, 1000, false, {}},
-             {"res", "most cells along any axis", "64", 1, 1024, true, {}}},
+             {"res", "most cells along any axis", "64", 1, 1024, true, {}},
+             {"insert", "a triangle into every cell of its box, or only those its surface overlaps (a4's test)", "box", 0, 0, false,
+              {"box", "exact"}}},
             [](const AcceleratorParameters& p) {
                 GridOptions options;
                 options.cellsPerPrimitive = p.number("C");
                 options.maxResolution = p.integer("res");
-                return std::make_unique<GridAccelerator>(options);
+                return std::make_unique<GridAccelerator>(options, p.word("insert") == "exact");
             },
-            {"grid:C=1", "grid:C=3", "grid:C=9", "grid:C=27", "grid:C=81"}};
+            {"grid:C=1", "grid:C=3", "grid:C=9", "grid:C=27", "grid:C=81", "grid:insert=exact"}};
 }
 
 }  // namespace rtlab

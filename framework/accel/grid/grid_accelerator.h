@@ -1,5 +1,6 @@
 // Wraps the uniform grid of assignment a3 in the Accelerator interface: building runs the
-// framework's gridFrame and the student's fillGridCells, queries the student's traversal.
+// framework's gridFrame and the student's fillGridCells (then, with exact insertion, a4's
+// triangle-box test on every cell), queries the student's traversal.
 #pragma once
 
 #include "framework/accel/accelerator.h"
@@ -9,7 +10,7 @@ namespace rtlab {
 
 class GridAccelerator final : public Accelerator {
 public:
-    explicit GridAccelerator(const GridOptions& options) : options_(options) {}
+    GridAccelerator(const GridOptions& options, bool exactInsertion) : options_(options), exactInsertion_(exactInsertion) {}
 
     void build(const PrimitiveSet& primitives) override;
     Hit intersect(const Ray& ray, TraversalStats& stats) const override;
@@ -24,6 +25,7 @@ public:
 
 private:
     GridOptions options_;
+    bool exactInsertion_;
     const PrimitiveSet* primitives_ = nullptr;
     UniformGrid grid_;
 };

@@ -42,8 +42,7 @@ StructureView TwoLevelGridAccelerator::structure() const {
                 for (int x = 0; x < grid.resolution[0]; ++x) {
                     size_t c = grid.cellIndex({x, y, z});
                     StructureNode cell;
-                    Vec3 lower = grid.bounds.lower + Vec3(float(x), float(y), float(z)) * grid.cellWidth;
-                    cell.bounds = Bounds3f(lower, lower + grid.cellWidth);
+                    cell.bounds = gridCellBox(grid, {x, y, z});
                     cell.firstPrim = static_cast<uint32_t>(view.primIndices.size());
                     cell.primCount = grid.cellStart[c + 1] - grid.cellStart[c];
                     view.primIndices.insert(view.primIndices.end(), grid.primIndices.begin() + grid.cellStart[c],

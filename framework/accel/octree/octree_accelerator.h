@@ -1,0 +1,31 @@
+// Wraps the octree of assignment a4 in the Accelerator interface: building runs the student's
+// buildOctree over the primitive set, queries the student's traversal.
+#pragma once
+
+#include "framework/accel/accelerator.h"
+#include "framework/interface/octree.h"
+
+namespace rtlab {
+
+class OctreeAccelerator final : public Accelerator {
+public:
+    explicit OctreeAccelerator(const OctreeOptions& options) : options_(options) {}
+
+    void build(const PrimitiveSet& primitives) override;
+    Hit intersect(const Ray& ray, TraversalStats& stats) const override;
+    bool occluded(const Ray& ray, TraversalStats& stats) const override;
+    // The nodes with their boxes (childBox of the parent's), children in index order.
+    StructureView structure() const override;
+    size_t memoryBytes() const override {
+        return octree_.nodes.size() * sizeof(OctreeNode) + octree_.primIndices.size() * sizeof(uint32_t);
+    }
+
+    const Octree& octree() const { return octree_; }
+
+private:
+    OctreeOptions options_;
+    const PrimitiveSet* primitives_ = nullptr;
+    Octree octree_;
+};
+
+}  // namespace rtlab
