@@ -27,6 +27,7 @@ public:
     // Triangles come first (ids 0 .. triangleCount()-1), spheres after them.
     uint32_t triangleCount() const { return static_cast<uint32_t>(triangles_.size()); }
     const std::array<Vec3, 3>& triangle(uint32_t prim) const { return triangles_[prim]; }
+    std::span<const std::array<Vec3, 3>> allTriangles() const { return triangles_; }
 
     // Closest-hit step: tests primitive prim against (ray.tMin, hit.t]; on a hit, overwrites
     // hit and returns true.

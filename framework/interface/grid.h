@@ -7,7 +7,6 @@
 #include "framework/core/bounds.h"
 
 #include <array>
-#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -35,14 +34,6 @@ struct UniformGrid {
         return (size_t(c[2]) * resolution[1] + c[1]) * resolution[0] + c[0];
     }
 };
-
-// A primitive box the grid can place: finite and not empty. Degenerate input (NaN or infinite
-// vertices) gives boxes that are neither, and such primitives go into no cell.
-inline bool isPlaceable(const Bounds3f& box) {
-    for (int a = 0; a < 3; ++a)
-        if (!std::isfinite(box.lower[a]) || !std::isfinite(box.upper[a]) || box.lower[a] > box.upper[a]) return false;
-    return true;
-}
 
 // Beyond the lecture: a two-level grid. The top grid is built by the usual rule; each top cell
 // holding more than a few primitives is refined by a grid of its own, over that cell, with the
