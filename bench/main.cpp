@@ -7,6 +7,7 @@
 #include "bench/parameter_sweep.h"
 #include "bench/reference_check.h"
 #include "bench/grid_report.h"
+#include "bench/kdtree_report.h"
 #include "bench/report.h"
 #include "bench/throughput.h"
 #include "framework/core/error.h"
@@ -69,6 +70,7 @@ int runBench(const Options& options) {
         writeMarkdown(std::cout, records);
         writeTargets(std::cout, records);
         writeGridTargets(std::cout, records);
+        writeKdTreeTargets(std::cout, records);
         if (!options.outDir.empty()) {
             writeCsv(outPath("results.csv"), records);
             writeGridSweepSvg(outPath("grid-sweep.svg"), records);
