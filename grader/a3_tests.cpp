@@ -7,6 +7,7 @@
 #include "grader/assignment_tests.h"
 #include "grader/grid_oracle.h"
 #include "grader/scene_codec.h"
+#include "grader/truth_table.h"
 
 #include <cmath>
 #include <cstdio>
@@ -46,28 +47,6 @@ GridCell readCell(ByteReader& in) {
     for (int& v : c) v = in.get<int32_t>();
     return c;
 }
-
-// Counts a truth table's cases; the first wrong one becomes the reason, every one a detail.
-class Tally {
-public:
-    explicit Tally(TestResult& result) : result_(result) {}
-
-    void record(const std::string& id, const std::string& problem) {
-        ++total_;
-        if (problem.empty()) {
-            ++passed_;
-            return;
-        }
-        result_.details.push_back(id + ": " + problem);
-        if (first_.empty()) first_ = id + ": " + problem;
-    }
-    void finish() { setFromCounts(result_, passed_, total_, first_); }
-
-private:
-    TestResult& result_;
-    size_t passed_ = 0, total_ = 0;
-    std::string first_;
-};
 
 // A frame of 4 x 2 x 2 unit cells over [0,4] x [0,2] x [-1,1]: every boundary is dyadic.
 GridFrame unitFrame() { return frameOf(Bounds3f(Vec3(0, 0, -1), Vec3(4, 2, 1)), {4, 2, 2}); }

@@ -21,6 +21,10 @@ std::vector<TestGroup> a3WithImages(GradingContext& context) {
     return withImages<a3Groups>(context, {"a3", "grid", "the renderer with --accel grid (a0 + a3 functions)"});
 }
 
+std::vector<TestGroup> a5WithImages(GradingContext& context) {
+    return withImages<a5Groups>(context, {"a5", "kdtree:build=sort", "the renderer with --accel kdtree:build=sort (a0 + a5 functions)"});
+}
+
 }  // namespace
 
 const std::vector<Assignment>& assignments() {
@@ -29,6 +33,7 @@ const std::vector<Assignment>& assignments() {
         {"a1", "BVH with median, middle and equal-counts splits", a1WithImages, {"a0_intersect", "a1_bvh"}},
         {"a2", "SAH: full sweep and buckets", a2Groups, {"a0_intersect", "a1_bvh", "a2_sah"}},
         {"a3", "uniform grid and 3D-DDA", a3WithImages, {"a0_intersect", "a3_grid"}},
+        {"a5", "KD-tree: the SAH with events, the leaf rule, front-to-back traversal", a5WithImages, {"a0_intersect", "a5_kdtree"}},
     };
     return list;
 }

@@ -1,5 +1,7 @@
 #include "grader/kd_cases.h"
 
+#include "grader/test_scenes.h"
+
 #include <cmath>
 #include <limits>
 
@@ -202,7 +204,90 @@ std::vector<ChildOrderCase> childOrderCases() {
         {"crossing exactly at tMin: both", 0, 0.5f, ray(o0, {1, 0, 0}), 0.5f, 2, {true, true, true, 0.5f}},
         {"the plane z = 2: tSplit = (2 + 2) / 0.5", 2, 2.0f, ray({0, 0, -2}, {0, 0, 0.5f}), 1, 10, {true, true, true, 8.0f}},
         {"an endless segment", 0, 0.5f, ray(o0, {0.25f, 0, 0}), 0, inf, {true, true, true, 2.0f}},
+        {"crossing one ulp beyond tMax, within the margin: both", 0, 0.5f, ray(o0, {1, 0, 0}), 0, std::nextafter(0.5f, 0.0f),
+         {true, true, true, 0.5f}},
+        {"crossing one ulp before tMin, within the margin: both", 0, 0.5f, ray(o0, {1, 0, 0}), std::nextafter(0.5f, 1.0f), 2,
+         {true, true, true, 0.5f}},
+        {"crossing beyond the margin (tMax = 0.4999): the near child only", 0, 0.5f, ray(o0, {1, 0, 0}), 0, 0.4999f,
+         {true, true, false, 0.5f}},
     };
+}
+
+// Trees built by hand, so the walk is judged on its own: each ray's hit, the primitives it tests
+// in order (the order of the leaves and the mailbox), and the box test plus plane steps it
+// counts. Every triangle lies in an axis plane or in x + z = 2.25, so every t is exact.
+std::vector<WalkCase> walkCases() {
+    auto wallX = [](SceneBuilder& b, float x, float y0, float y1, float z1) { b.addTriangle({x, y0, 0}, {x, y1, 0}, {x, y0, z1}); };
+    std::vector<WalkCase> cases;
+    {
+        // KD-03: the plane x = 0.5 between L (prim 0, x = 0.25) and R (prim 1, x = 0.75); M (prim
+        // 2) lies in z = 1 across the plane, so it is in both leaves.
+        SceneBuilder b;
+        wallX(b, 0.25f, 0, 2, 2);
+        wallX(b, 0.75f, 0, 2, 2);
+        b.addTriangle({0.3f, 0, 1}, {0.7f, 0, 1}, {0.5f, 2, 1});
+        KdTree tree;
+        tree.bounds = Bounds3f(Vec3(0.25f, 0, 0), Vec3(0.75f, 2, 2));
+        tree.maxDepth = 1;
+        tree.nodes = {KdNode::interior(0, 0.5f, 2), KdNode::leaf(0, 2), KdNode::leaf(2, 2)};
+        tree.primIndices = {0, 2, 1, 2};
+        const Vec3 onPlane(0.5f, 0.5f, 0.5f), inPlane(0.5f, 0.5f, 0);
+        cases.push_back({"KD-03 (root x = 0.5, L below, R above, M in both)", b.take(), tree,
+                         {{"on the plane moving down: L at 0.25, below only", ray(onPlane, {-1, 0, 0}), false, 0, 0.25f, {0, 2}, 2},
+                          {"on the plane moving up: R at 0.25, above only", ray(onPlane, {1, 0, 0}), false, 1, 0.25f, {1, 2}, 2},
+                          {"in the plane, d.x = +0: both leaves, M at 1 tested once", ray(inPlane, {0.0f, 0, 1}), false, 2, 1, {0, 2, 1}, 2},
+                          {"in the plane, d.x = -0: the same", ray(inPlane, {-0.0f, 0, 1}), false, 2, 1, {0, 2, 1}, 2},
+                          {"any hit, on the plane moving up", ray(onPlane, {1, 0, 0}), true, 1, 0, {}, 0}}});
+    }
+    {
+        // B (prim 0) in the plane x + z = 2.25 reaches across x = 1; S (prim 1) lies in x = 1.25,
+        // above; C (prim 2) in x = 0.5 covers y >= 1.5 only, below.
+        SceneBuilder b;
+        b.addTriangle({2.25f, -1, 0}, {2.25f, 3, 0}, {0.25f, 1, 2});
+        wallX(b, 1.25f, 0, 2, 2);
+        b.addTriangle({0.5f, 1.5f, 0}, {0.5f, 3, 0}, {0.5f, 1.5f, 2});
+        KdTree tree;
+        tree.bounds = Bounds3f(Vec3(0.25f, -1, 0), Vec3(2.25f, 3, 2));
+        tree.maxDepth = 1;
+        tree.nodes = {KdNode::interior(0, 1.0f, 2), KdNode::leaf(0, 2), KdNode::leaf(2, 2)};
+        tree.primIndices = {0, 2, 0, 1};
+        Ray shortRay = ray({0, 0.5f, 0.5f}, {1, 0, 0}), lateRay = shortRay;
+        shortRay.tMax = 1.0f;
+        lateRay.tMin = 1.5f;
+        cases.push_back({"a hit beyond its leaf (root x = 1: B and C below, B and S above)", b.take(), tree,
+                         {{"B at 1.75 from the below leaf, S at 1.25 above wins; B tested once", ray({0, 0.5f, 0.5f}, {1, 0, 0}), false, 1, 1.25f, {0, 2, 1}, 2},
+                          {"from above: B at 1.25; the below leaf begins at 2, beyond it: not entered", ray({3, 2, 0.5f}, {-1, 0, 0}), false, 0, 1.25f, {0, 1}, 2},
+                          {"tMax 1: nothing, both leaves entered (the plane is crossed at tMax)", shortRay, false, kNoHit, 0, {0, 2, 1}, 2},
+                          {"tMin 1.5: the plane lies before the segment, above only; B at 1.75", lateRay, false, 0, 1.75f, {0, 1}, 2},
+                          {"missing the tree's box: no plane step, no test", ray({0, 5, 0.5f}, {1, 0, 0}), false, kNoHit, 0, {}, 1},
+                          {"any hit from below", ray({0, 0.5f, 0.5f}, {1, 0, 0}), true, 1, 0, {}, 0},
+                          {"any hit within tMax 1: none", shortRay, true, 0, 0, {}, 0}}});
+    }
+    {
+        // A chain 40 deep: level d cuts x = 40 - d, its above child a leaf with the wall at
+        // x = 40.5 - d (prim 39 - d); the deepest below child, [0, 1], is empty. A ray along +x
+        // leaves one pending node per level: 40 on the stack when it reaches the empty leaf, and
+        // the nearest wall (prim 0 at x = 1.5) is in the last one pushed.
+        SceneBuilder b;
+        for (int k = 0; k < 40; ++k) wallX(b, 1.5f + float(k), 0, 2, 2);
+        KdTree tree;
+        tree.bounds = Bounds3f(Vec3(0, 0, 0), Vec3(41, 2, 2));
+        tree.maxDepth = 40;
+        for (uint32_t d = 0; d < 40; ++d) {
+            // This level's interior node is at 2d, its below child at 2d + 1 (the next level or,
+            // at the bottom, the empty leaf), its above leaf after the whole below subtree.
+            tree.nodes.push_back(KdNode::interior(0, 40.0f - float(d), 80 - d));
+        }
+        tree.nodes.push_back(KdNode::leaf(0, 0));
+        for (uint32_t d = 40; d-- > 0;) {
+            tree.nodes.push_back(KdNode::leaf(uint32_t(tree.primIndices.size()), 1));
+            tree.primIndices.push_back(39 - d);
+        }
+        cases.push_back({"KD-08 a tree 40 deep (the stack must hold one pending node per level)", b.take(), tree,
+                         {{"along +x: 40 planes, 40 pending nodes, the nearest wall in the last one", ray({-1, 0.5f, 0.5f}, {1, 0, 0}), false, 0, 2.5f, {0}, 41},
+                          {"any hit along +x", ray({-1, 0.5f, 0.5f}, {1, 0, 0}), true, 1, 0, {}, 0}}});
+    }
+    return cases;
 }
 
 }  // namespace rtlab::grader

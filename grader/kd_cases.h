@@ -3,8 +3,10 @@
 // are dyadic where a value must be exact.
 #pragma once
 
+#include "framework/core/hit.h"
 #include "framework/core/ray.h"
 #include "framework/interface/kdtree.h"
+#include "framework/scene/scene.h"
 
 #include <string>
 #include <vector>
@@ -78,6 +80,24 @@ struct ChildOrderCase {
     KdChildOrder expected;  // tSplit compared by value; NaN must be NaN
 };
 
+// A ray through a tree the grader built by hand, and what the pinned traversal must do with it.
+struct WalkRay {
+    std::string id;
+    Ray ray;
+    bool occlusionQuery;           // any-hit instead of closest hit
+    uint32_t prim;                 // closest hit: the primitive (kNoHit: a miss); any hit: 1 or 0
+    float t;                       // closest hit: where
+    std::vector<uint32_t> tested;  // closest hit: the primitives tested, in order
+    uint32_t steps;                // closest hit: box tests + plane steps
+};
+
+struct WalkCase {
+    std::string id;
+    Scene scene;
+    KdTree tree;
+    std::vector<WalkRay> rays;
+};
+
 std::vector<SahCostCase> sahCostCases();
 std::vector<EventOrderCase> eventOrderCases();
 std::vector<SortedEventsCase> sortedEventsCases();
@@ -86,5 +106,6 @@ std::vector<ClassifyCase> classifyCases();
 std::vector<MaxDepthCase> maxDepthCases();
 std::vector<DecisionCase> decisionCases();
 std::vector<ChildOrderCase> childOrderCases();
+std::vector<WalkCase> walkCases();
 
 }  // namespace rtlab::grader

@@ -4,11 +4,10 @@
 // Contract (framework/interface/a5_kdtree.h, framework/interface/bsp.h):
 //   * buildBspAutopartition: the placeable primitives, tree.bounds their union, tree.thickness =
 //     kBspRelativeThickness * max(1, the largest |coordinate| of tree.bounds). A node: a leaf if it
-//     has at most options.maxPrims primitives or sits at options.maxDepth; otherwise the plane
-//     (unit normal in double, offset = dot(normal, first vertex)) of one of its first
-//     kBspCandidates non-degenerate triangles that cuts the fewest primitives (then the most even
-//     split, then the earlier one); a leaf if that plane cuts more than half of the node's
-//     primitives. A primitive whose vertices (a sphere: its box's corners) all lie within
+//     has at most options.maxPrims primitives or sits at options.maxDepth; otherwise, of the
+//     triangles at indices k n / min(kBspCandidates, n) of its list, the plane (unit normal in
+//     double, offset = dot(normal, first vertex)) with the lowest kBspCutWeight * cuts +
+//     |front - back|; a leaf if there is none or it cuts more than half of the primitives. A primitive whose vertices (a sphere: its box's corners) all lie within
 //     thickness of the plane stays in the node; the others go front, back or both. Nodes depth
 //     first, back child first.
 //   * intersectBsp / occludedBsp: the KD-tree's walk; at a node test its own primitives, then

@@ -2,12 +2,12 @@
 //
 // Contract (framework/interface/a5_kdtree.h):
 //   * kdChildOrder: tSplit = (split - o) * inverse.invDirection[axis] (o = ray.origin[axis]);
-//     belowFirst = o < split || (o == split && d <= 0) (d = ray.direction[axis]);
-//     tSplit > tMax || tSplit <= 0: {belowFirst, first only}; else tSplit < tMin: second only;
-//     else both.
+//     belowFirst = o < split || (o == split && d <= 0) (d = ray.direction[axis]); with
+//     m = kKdRoundingMargin: tSplit > tMax * m || tSplit <= 0: {belowFirst, first only}; else
+//     tSplit * m < tMin: second only; else both.
 //   * intersectKdTree: no nodes -> false. tMin from traversal.hitsBox(tree.bounds, hit.t, &tMin)
 //     (false on a miss); tMax = min(hit.t, exit), exit = the smallest over the axes of
-//     (far face - o) * invDirection * (1 + 2 * gamma(3)), NaN skipped (far face:
+//     (far face - o) * invDirection * kKdRoundingMargin, NaN skipped (far face:
 //     tree.bounds[1 - dirIsNegative[axis]][axis]). Loop from the root with a stack of
 //     kKdMaxDepthLimit entries {node, tMin, tMax}:
 //       interior: traversal.countPlaneStep(); order = kdChildOrder(...); the below child is
@@ -22,7 +22,8 @@
 //   * `d >= 0` in belowFirst was pbrt's bug until 2011: a ray starting on the plane and moving
 //     up would visit only the below child (tSplit = 0 <= 0 means "first only").
 //   * A leaf's hit may lie beyond the leaf: keep it and go on; the pop test ends the walk.
-//   * gamma is in framework/core/float_bits.h.
+//   * Without the margin m, a ray through a vertex where two planes meet can skip the one cell
+//     whose triangles it hits: two roundings of the same crossing disagree.
 #include "framework/core/error.h"
 #include "framework/interface/a5_kdtree.h"
 

@@ -88,19 +88,21 @@ KdTree buildKdTree(std::span<const Bounds3f> primBounds, const KdTreeOptions& op
 // --- Traversal (assignments/a5_kdtree/kd_traverse.cpp) -----------------------------------------
 
 // Where a ray goes at an interior node with the plane (axis, split), for its segment
-// [tMin, tMax] inside the node; o and d are ray.origin[axis] and ray.direction[axis]:
+// [tMin, tMax] inside the node; o and d are ray.origin[axis] and ray.direction[axis], and
+// m = kKdRoundingMargin:
 //   tSplit     = (split - o) * inverse.invDirection[axis], in float
 //   belowFirst = o < split || (o == split && d <= 0)
-//   tSplit > tMax or tSplit <= 0: the first (near) child only;
-//   otherwise tSplit < tMin: the second (far) child only;
+//   tSplit > tMax * m or tSplit <= 0: the first (near) child only;
+//   otherwise tSplit * m < tMin: the second (far) child only;
 //   otherwise both (also for a NaN tSplit: a ray running in the plane).
+// The margin keeps a ray through the corner where two planes meet in every cell at the corner.
 KdChildOrder kdChildOrder(int axis, float split, const Ray& ray, const RayInverse& inverse, float tMin, float tMax);
 
 // Closest hit, front to back, with a stack of kKdMaxDepthLimit pending nodes:
 //  * no nodes: false. The segment in the tree: tMin from traversal.hitsBox(tree.bounds, hit.t,
 //    &tMin) (a miss: false), tMax = min(hit.t, the ray's exit from tree.bounds: the smallest
 //    far-face distance (face - o) * invDirection over the axes, NaN ones skipped, times
-//    1 + 2 gamma(3) as in the slab test).
+//    kKdRoundingMargin, as the slab test enlarges its far distance).
 //  * an interior node: traversal.countPlaneStep(), kdChildOrder; when both children are visited,
 //    push the far one with [tSplit, tMax] and go on with the near one over [tMin, tSplit] (a NaN
 //    tSplit gives both the whole [tMin, tMax]).
@@ -125,11 +127,12 @@ KdTree buildKdTreeNlogN(std::span<const Bounds3f> primBounds, const KdTreeOption
 // A BSP tree whose planes are the planes of the scene's own triangles (docs/bsp.md#rtlabs-autopartition).
 // triangles[i] are the vertices of primitive i for i < triangles.size(); the others (spheres)
 // are classified by the corners of their boxes. A node with more than options.maxPrims
-// primitives and less deep than options.maxDepth takes the plane of one of its first kBspCandidates
-// triangles (non-degenerate ones), the one that cuts the fewest primitives (ties: the more even
-// split, then the earlier triangle); primitives within tree.thickness of the plane stay in the
-// node, the others go to the front, the back or both children. A leaf when no triangle is left,
-// or when the best plane cuts more than half of the rest.
+// primitives and less deep than options.maxDepth tries the planes of kBspCandidates of its
+// triangles spread evenly over its list (the k-th at index k n / min(8, n); degenerate ones
+// skipped) and takes the lowest kBspCutWeight * cuts + |front - back| (ties: the earlier one);
+// primitives within tree.thickness of the plane stay in the node, the others go to the front,
+// the back or both children. A leaf when no candidate is left, or when the best plane cuts more
+// than half of the node's primitives.
 BspTree buildBspAutopartition(std::span<const std::array<Vec3, 3>> triangles, std::span<const Bounds3f> primBounds,
                               const BspOptions& options);
 // Closest hit and any hit, front to back: at a node, its own primitives, then the near side

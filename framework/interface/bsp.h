@@ -17,8 +17,10 @@ namespace rtlab {
 
 // The deepest a BSP tree may be, and so the size of a traversal stack.
 inline constexpr int kBspMaxDepthLimit = 64;
-// How many of a node's first triangles are tried as its plane.
+// How many of a node's triangles, spread evenly over its list, are tried as its plane, and what
+// a cut primitive weighs against one primitive of imbalance between the sides.
 inline constexpr int kBspCandidates = 8;
+inline constexpr size_t kBspCutWeight = 4;
 // Half the width of the band around a plane whose points count as lying in it, relative to the
 // scene's largest coordinate (at least 1): far wider than the rounding of a dot product, so no
 // primitive or ray is put on the wrong side by it.

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "framework/core/bounds.h"
+#include "framework/core/float_bits.h"
 
 #include <array>
 #include <bit>
@@ -29,6 +30,11 @@ inline constexpr double kKdEmptyBonus = 0.5;
 inline constexpr int kKdMaxDepthLimit = 64;
 // Splits that cost more than the leaf they replace, allowed on one path before it must end.
 inline constexpr int kKdMaxBadRefines = 3;
+// The traversal's margin for rounding: a plane distance tSplit = (split - o) * invDirection and
+// a segment end (an ancestor's tSplit, or the tree's exit) are each within gamma(3) of the true
+// value, so two of them that are equal in exact arithmetic (a ray through the corner where two
+// planes meet) compare within this factor.
+inline constexpr float kKdRoundingMargin = 1.0f + 2.0f * gamma(3);
 
 struct KdCosts {
     double traversal = kKdTraversalCost;        // K_T (0 .. 1000)

@@ -74,14 +74,18 @@ private:
         return Side::Both;
     }
 
-    // The plane of one of the first kBspCandidates triangles that cuts the fewest primitives,
-    // then splits the rest most evenly; false when none is worth it.
+    // Of kBspCandidates triangles spread evenly over the node's list, the plane with the lowest
+    // kBspCutWeight * cuts + |front - back|; false when there is none, or when it cuts more
+    // than half of the primitives.
     bool choosePlane(const std::vector<uint32_t>& prims, Plane* best) const {
-        size_t bestCuts = 0, bestImbalance = 0;
-        int tried = 0;
-        for (size_t i = 0; i < prims.size() && tried < kBspCandidates; ++i) {
+        size_t bestScore = 0, bestCuts = 0;
+        bool found = false;
+        for (size_t k = 0; k < size_t(kBspCandidates) && k < prims.size(); ++k) {
+            // Spread out, not the first few: neighbours in a mesh's list lie side by side on its
+            // surface, and their planes all leave the rest of a closed surface on one side.
+            uint32_t candidate = prims[k * prims.size() / std::min<size_t>(kBspCandidates, prims.size())];
             Plane plane;
-            if (prims[i] >= triangles_.size() || !planeOf(triangles_[prims[i]], &plane)) continue;
+            if (candidate >= triangles_.size() || !planeOf(triangles_[candidate], &plane)) continue;
             size_t cuts = 0, front = 0, back = 0;
             for (uint32_t prim : prims) {
                 Side side = sideOf(prim, plane);
@@ -89,16 +93,17 @@ private:
                 front += side == Side::Front;
                 back += side == Side::Back;
             }
-            size_t imbalance = front > back ? front - back : back - front;
-            if (tried++ == 0 || cuts < bestCuts || (cuts == bestCuts && imbalance < bestImbalance)) {
+            size_t score = kBspCutWeight * cuts + (front > back ? front - back : back - front);
+            if (!found || score < bestScore) {
                 *best = plane;
+                bestScore = score;
                 bestCuts = cuts;
-                bestImbalance = imbalance;
+                found = true;
             }
         }
         // A plane that copies most primitives into both children makes the tree grow faster
         // than it sorts anything.
-        return tried > 0 && 2 * bestCuts <= prims.size();
+        return found && 2 * bestCuts <= prims.size();
     }
 
     size_t addNode(const Plane& plane, const std::vector<uint32_t>& prims, bool leaf) {

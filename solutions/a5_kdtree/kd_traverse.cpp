@@ -1,6 +1,5 @@
 // Reference solution: the KD-tree's front-to-back traversal with a fixed stack, as pbrt walks it
 // (docs/a5-kdtree.md#traversal).
-#include "framework/core/float_bits.h"
 #include "framework/interface/a5_kdtree.h"
 
 #include <array>
@@ -14,10 +13,12 @@ KdChildOrder kdChildOrder(int axis, float split, const Ray& ray, const RayInvers
     // An origin on the plane: the side the ray moves into is near, below for d <= 0 (pbrt's 2011
     // fix; `d >= 0` sends a ray starting on the plane only into the side it leaves).
     bool belowFirst = o < split || (o == split && d <= 0.0f);
-    // The plane behind the origin or beyond the segment: only the near side is crossed. Written
-    // so that NaN (0 * inf: a ray in the plane) fails both tests and visits both sides.
-    if (tSplit > tMax || tSplit <= 0.0f) return {belowFirst, true, false, tSplit};
-    if (tSplit < tMin) return {belowFirst, false, true, tSplit};
+    // The plane behind the origin or beyond the segment: only the near side is crossed. The
+    // margin: a ray through the corner where this plane meets an ancestor's crosses both at one
+    // t, computed twice with different roundings; it must reach every cell at the corner.
+    // Written so that NaN (0 * inf: a ray in the plane) fails both tests and visits both sides.
+    if (tSplit > tMax * kKdRoundingMargin || tSplit <= 0.0f) return {belowFirst, true, false, tSplit};
+    if (tSplit * kKdRoundingMargin < tMin) return {belowFirst, false, true, tSplit};
     return {belowFirst, true, true, tSplit};
 }
 
@@ -36,7 +37,7 @@ bool segmentInTree(const KdTree& tree, Traversal& traversal, float tMax, float* 
     *tExit = tMax;
     for (int axis = 0; axis < 3; ++axis) {
         float face = tree.bounds[1 - inverse.dirIsNegative[axis]][axis];
-        float t = (face - inverse.origin[axis]) * inverse.invDirection[axis] * (1.0f + 2.0f * gamma(3));
+        float t = (face - inverse.origin[axis]) * inverse.invDirection[axis] * kKdRoundingMargin;
         if (t < *tExit) *tExit = t;  // NaN (origin on a face, direction 0 along it) is skipped
     }
     return true;
