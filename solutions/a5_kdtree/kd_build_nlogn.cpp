@@ -30,6 +30,14 @@ struct Builder {
         // full box (no clipping), so a primitive in both children brings the same events to both.
         AxisEvents below, above;
         for (int axis = 0; axis < 3; ++axis) {
+            // Sized first: growing lists of millions of events would copy each several times.
+            size_t nBelow = 0, nAbove = 0;
+            for (const KdEvent& e : events[axis]) {
+                nBelow += sideOf[e.prim] != KdSide::Above;
+                nAbove += sideOf[e.prim] != KdSide::Below;
+            }
+            below[axis].reserve(nBelow);
+            above[axis].reserve(nAbove);
             for (const KdEvent& e : events[axis]) {
                 if (sideOf[e.prim] != KdSide::Above) below[axis].push_back(e);
                 if (sideOf[e.prim] != KdSide::Below) above[axis].push_back(e);

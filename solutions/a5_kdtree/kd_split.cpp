@@ -28,7 +28,8 @@ KdSplit kdBestSplit(const Bounds3f& node, const KdNodeEvents& events, uint32_t p
             // A plane on the node's face would leave one child with the whole node.
             if (node.lower[axis] < p && p < node.upper[axis]) {
                 consider(axis, p, KdSide::Below, nLess + planars, nMore);
-                consider(axis, p, KdSide::Above, nLess, nMore + planars);
+                // Without primitives in the plane both sides score the same: below stays.
+                if (planars > 0) consider(axis, p, KdSide::Above, nLess, nMore + planars);
             }
             nLess += planars + starts;
         }
