@@ -340,19 +340,27 @@ std::optional<KdTree> readTree(const PhaseOutcome& outcome, size_t primCount, st
     }
 }
 
+// A build phase: the scene, then what writeOptions adds.
+template <typename WriteOptions>
+std::function<ChildPhase(const Scene&)> buildPhase(const char* stub, const char* task, WriteOptions writeOptions) {
+    return [=](const Scene& scene) {
+        ByteWriter input;
+        writeScene(scene, input);
+        writeOptions(input);
+        return makePhase(stub, task, std::move(input));
+    };
+}
+
 // The KD-tree as the generic structure tests see it, with pbrt-v3's defaults.
 StructurePlugin kdPlugin(const std::string& label, worker::KdBuildFunction function, const char* stub) {
     const KdTreeOptions options;
     StructurePlugin plugin;
     plugin.assignment = kA5;
     plugin.label = label;
-    plugin.build = [options, function, stub](const Scene& scene) {
-        ByteWriter input;
-        writeScene(scene, input);
+    plugin.build = buildPhase(stub, worker::kTaskKdBuild, [options, function](ByteWriter& input) {
         input.put(options);
         input.put<uint8_t>(static_cast<uint8_t>(function));
-        return makePhase(stub, worker::kTaskKdBuild, std::move(input));
-    };
+    });
     plugin.queryTask = worker::kTaskKdQuery;
     plugin.queries = {{"closest-hits", worker::QueryKind::Closest, kStubClosest}, {"any-hits", worker::QueryKind::Occluded, kStubOccluded}};
     plugin.check = [options](const PhaseOutcome& build, const std::vector<Bounds3f>& primBounds, CheckScope) {
@@ -381,12 +389,7 @@ StructurePlugin bspPlugin() {
     StructurePlugin plugin;
     plugin.assignment = kA5;
     plugin.label = "bsp";
-    plugin.build = [options](const Scene& scene) {
-        ByteWriter input;
-        writeScene(scene, input);
-        input.put(options);
-        return makePhase(kStubBsp, worker::kTaskBspBuild, std::move(input));
-    };
+    plugin.build = buildPhase(kStubBsp, worker::kTaskBspBuild, [options](ByteWriter& input) { input.put(options); });
     plugin.queryTask = worker::kTaskBspQuery;
     plugin.queries = {{"closest-hits", worker::QueryKind::Closest, kStubBspClosest}, {"any-hits", worker::QueryKind::Occluded, kStubBspOccluded}};
     // Judged by its hits only: the structure test says what was built.

@@ -68,19 +68,7 @@ public:
         }
         int axis = node.axis();
         float s = node.split();
-        if (!(box.lower[axis] < s && s < box.upper[axis])) {
-            note(where + ": the plane " + std::string(kAxisNames[axis]) + " = " + number(s) + " is not strictly inside the node");
-            judged = false;
-        } else if (judged && decision.leaf) {
-            note(where + " is split at " + std::string(kAxisNames[axis]) + " = " + number(s) + "; the rules make it a leaf" +
-                 (best.found() ? " (best cost " + number(best.cost) + ", " + std::to_string(decision.badRefines) + " bad refines)" : " (no plane lies strictly inside it)"));
-            judged = false;
-        } else if (judged && (axis != best.axis || s != best.position)) {
-            note(where + " is split at " + std::string(kAxisNames[axis]) + " = " + number(s) + "; the best plane is " +
-                 describePlane(best.axis, best.position, best.planarSide) + " (cost " + number(best.cost) + " against " +
-                 number(kdPlaneCost(box, axis, s, count(prims, axis, s, KdSide::Below, KdSide::Below), count(prims, axis, s, KdSide::Above, KdSide::Below), options_.costs)) + ")");
-            judged = false;
-        }
+        judged = judgePlane(where, box, axis, s, best, decision, judged);
         // Where primitives lying in the plane go is the best plane's rule; a plane that is not
         // the best has no rule, so its subtree is only checked for its layout and membership.
         KdSide planarSide = judged ? best.planarSide : KdSide::Below;
@@ -112,21 +100,35 @@ public:
     }
 
 private:
+    // Whether an interior node's plane is the one the rules choose; notes why not. Below a plane
+    // that is not, nothing is judged any more, only the layout and the membership are checked.
+    bool judgePlane(const std::string& where, const Bounds3f& box, int axis, float s, const KdSplit& best, const KdNodeDecision& decision,
+                    bool judged) {
+        std::string plane = std::string(kAxisNames[axis]) + " = " + number(s);
+        if (!(box.lower[axis] < s && s < box.upper[axis])) {
+            note(where + ": the plane " + plane + " is not strictly inside the node");
+            return false;
+        }
+        if (!judged) return false;
+        if (decision.leaf) {
+            note(where + " is split at " + plane + "; the rules make it a leaf" +
+                 (best.found() ? " (best cost " + number(best.cost) + ", " + std::to_string(decision.badRefines) + " bad refines)"
+                               : " (no plane lies strictly inside it)"));
+            return false;
+        }
+        if (axis != best.axis || s != best.position) {
+            note(where + " is split at " + plane + "; the best plane is " + describePlane(best.axis, best.position, best.planarSide) + " (cost " +
+                 number(best.cost) + ")");
+            return false;
+        }
+        return true;
+    }
+
     static KdSide classify(const Bounds3f& box, int axis, float s, KdSide planarSide) {
         bool inPlane = box.lower[axis] == s && box.upper[axis] == s;
         bool below = box.lower[axis] < s || (inPlane && planarSide == KdSide::Below);
         bool above = box.upper[axis] > s || (inPlane && planarSide == KdSide::Above);
         return below && above ? KdSide::Both : below ? KdSide::Below : KdSide::Above;
-    }
-
-    // How many of prims the classification with planarSide sends to side (Both counts for each).
-    uint32_t count(const std::vector<uint32_t>& prims, int axis, float s, KdSide side, KdSide planarSide) const {
-        uint32_t n = 0;
-        for (uint32_t prim : prims) {
-            KdSide c = classify(primBounds_[prim], axis, s, planarSide);
-            n += c == side || c == KdSide::Both;
-        }
-        return n;
     }
 
     bool leaf(const KdNode& node, const std::string& where, const std::vector<uint32_t>& prims, bool judged) {
