@@ -1,5 +1,6 @@
 #include "bench/grid_report.h"
 
+#include "bench/report.h"
 #include "bench/svg_plot.h"
 
 #include <algorithm>
@@ -14,20 +15,6 @@ constexpr const char* kBvh = "rtlab:bvh-buckets:12";
 const char* const kSweep[] = {"rtlab:grid:C=1", "rtlab:grid:C=3", "rtlab:grid:C=9", "rtlab:grid:C=27", "rtlab:grid:C=81"};
 const double kSweepC[] = {1, 3, 9, 27, 81};
 
-const ThroughputRecord* primaryRow(const std::vector<ThroughputRecord>& records, const std::string& scene, const std::string& system) {
-    for (const ThroughputRecord& r : records)
-        if (r.scene == scene && r.system == system && r.rays == RayKind::Primary && r.threads == 1 && r.measured) return &r;
-    return nullptr;
-}
-
-std::string number(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3g", v);
-    return text;
-}
-
-std::string verdict(bool met) { return met ? "met" : "**not met**"; }
-
 }  // namespace
 
 void writeGridTargets(std::ostream& out, const std::vector<ThroughputRecord>& records) {
@@ -35,20 +22,20 @@ void writeGridTargets(std::ostream& out, const std::vector<ThroughputRecord>& re
     if (const ThroughputRecord *grid = primaryRow(records, "randsoup", "rtlab:grid:C=27"), *bvh = primaryRow(records, "randsoup", kBvh);
         grid && bvh && grid->buildMs > 0 && bvh->mraysPerSecond > 0) {
         double build = bvh->buildMs / grid->buildMs, trace = grid->mraysPerSecond / bvh->mraysPerSecond;
-        lines += "| randsoup | grid:C=27 builds " + number(build) + "x faster (target >= 10: " + verdict(build >= 10) +
-                 "), traces " + number(trace) + "x as fast (target >= 0.8: " + verdict(trace >= 0.8) + ") |\n";
+        lines += "| randsoup | grid:C=27 builds " + shortNumber(build) + "x faster (target >= 10: " + verdict(build >= 10) +
+                 "), traces " + shortNumber(trace) + "x as fast (target >= 0.8: " + verdict(trace >= 0.8) + ") |\n";
     }
     if (const ThroughputRecord* grid = primaryRow(records, "bunny", "rtlab:grid:C=27"); grid && grid->primitiveTestsPerRay) {
         double tests = *grid->primitiveTestsPerRay;
-        lines += "| bunny | grid:C=27: " + number(tests) + " triangle tests per primary ray (target <= 8: " + verdict(tests <= 8) + ") |\n";
+        lines += "| bunny | grid:C=27: " + shortNumber(tests) + " triangle tests per primary ray (target <= 8: " + verdict(tests <= 8) + ") |\n";
     }
     if (const ThroughputRecord *grid = primaryRow(records, "stadium", "rtlab:grid2"), *bvh = primaryRow(records, "stadium", kBvh);
         grid && bvh && bvh->mraysPerSecond > 0) {
         double ratio = grid->mraysPerSecond / bvh->mraysPerSecond;
         const ThroughputRecord* uniform = primaryRow(records, "stadium", "rtlab:grid:C=27");
-        lines += "| stadium | grid2 traces " + number(ratio) + "x as fast as " + std::string(kBvh + 6) + " (target >= 0.5: " +
+        lines += "| stadium | grid2 traces " + shortNumber(ratio) + "x as fast as " + std::string(kBvh + 6) + " (target >= 0.5: " +
                  verdict(ratio >= 0.5) + ")" +
-                 (uniform && uniform->mraysPerSecond > 0 ? "; the uniform grid:C=27 " + number(uniform->mraysPerSecond / bvh->mraysPerSecond) + "x" : "") +
+                 (uniform && uniform->mraysPerSecond > 0 ? "; the uniform grid:C=27 " + shortNumber(uniform->mraysPerSecond / bvh->mraysPerSecond) + "x" : "") +
                  " |\n";
     }
     if (lines.empty()) return;

@@ -8,6 +8,7 @@
 #include "bench/reference_check.h"
 #include "bench/grid_report.h"
 #include "bench/octree_report.h"
+#include "bench/kdtree_report.h"
 #include "bench/report.h"
 #include "bench/throughput.h"
 #include "framework/core/error.h"
@@ -71,6 +72,7 @@ int runBench(const Options& options) {
         writeTargets(std::cout, records);
         writeGridTargets(std::cout, records);
         writeOctreeTargets(std::cout, records);
+        writeKdTreeTargets(std::cout, records);
         if (!options.outDir.empty()) {
             writeCsv(outPath("results.csv"), records);
             writeGridSweepSvg(outPath("grid-sweep.svg"), records);

@@ -67,7 +67,7 @@ void writeMarkdown(std::ostream& out, const std::vector<ThroughputRecord>& recor
         out << "\n### " << scene << " (" << first.triangles << " triangles; load average " << first.loadAverage
             << " at the start)\n\n";
         out << "| system | build ms 1T | build ms 2T | primary 1T | incoherent 1T | primary 2T | incoherent 2T "
-               "| × Embree MEDIUM prim/inc 1T | SAH cost | node visits/ray prim/inc | cells/ray prim/inc "
+               "| × Embree MEDIUM prim/inc 1T | SAH cost | node visits/ray prim/inc | cells or planes/ray prim/inc "
                "| prim tests/ray prim/inc | bytes/tri | refs/tri | mismatches prim/inc |\n";
         out << "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
         for (const std::string& system : systemsInOrder(records, scene)) {
@@ -92,7 +92,7 @@ void writeMarkdown(std::ostream& out, const std::vector<ThroughputRecord>& recor
                 << mrays(p1->ratioToEmbreeMedium) << " / " << mrays(i1->ratioToEmbreeMedium) << " | "
                 << optionalText(p1->sahCost, [](double v) { return fixed(v, 1); }) << " | "
                 << perRay(p1, i1, &ThroughputRecord::nodeVisitsPerRay) << " | "
-                << perRay(p1, i1, &ThroughputRecord::cellStepsPerRay) << " | "
+                << perRay(p1, i1, p1->cellStepsPerRay ? &ThroughputRecord::cellStepsPerRay : &ThroughputRecord::planeStepsPerRay) << " | "
                 << perRay(p1, i1, &ThroughputRecord::primitiveTestsPerRay) << " | "
                 << fixed(p1->bytesPerTriangle, 1) << " | "
                 << optionalText(p1->referencesPerTriangle, [](double v) { return fixed(v, 2); }) << " | "
@@ -117,7 +117,7 @@ void writeCsv(const std::string& path, const std::vector<ThroughputRecord>& reco
     if (!out) throw Error(path + ": cannot open for writing");
     out << "scene,triangles,system,rays,threads,build_ms,mrays_per_s,ratio_to_embree_medium,sah_cost,"
            "node_visits_per_ray,prim_tests_per_ray,bytes_per_triangle,mismatches,hits,sum_t,load_average,note,"
-           "cell_steps_per_ray,references_per_triangle\n";
+           "cell_steps_per_ray,plane_steps_per_ray,references_per_triangle\n";
     auto number = [](const std::optional<double>& v) { return v ? fixed(*v, 4) : std::string(); };
     for (const ThroughputRecord& r : records) {
         bool measured = r.measured;
@@ -128,7 +128,7 @@ void writeCsv(const std::string& path, const std::vector<ThroughputRecord>& reco
             << (measured ? fixed(r.bytesPerTriangle, 2) : "") << ','
             << (r.mismatches ? std::to_string(*r.mismatches) : "") << ',' << (measured ? std::to_string(r.hits) : "")
             << ',' << (measured ? fixed(r.sumT, 3) : "") << ',' << r.loadAverage << ',' << quoted(r.note) << ','
-            << number(r.cellStepsPerRay) << ',' << number(r.referencesPerTriangle) << '\n';
+            << number(r.cellStepsPerRay) << ',' << number(r.planeStepsPerRay) << ',' << number(r.referencesPerTriangle) << '\n';
     }
     if (!out.flush()) throw Error(path + ": write failed");
 }
@@ -174,5 +174,19 @@ void writeTargets(std::ostream& out, const std::vector<ThroughputRecord>& record
             << " ms); target ≤ 1.5×: " << (ratio <= 1.5 ? "met" : "**not met**") << ".\n";
     }
 }
+
+const ThroughputRecord* primaryRow(const std::vector<ThroughputRecord>& records, const std::string& scene, const std::string& system) {
+    for (const ThroughputRecord& r : records)
+        if (r.scene == scene && r.system == system && r.rays == RayKind::Primary && r.threads == 1 && r.measured) return &r;
+    return nullptr;
+}
+
+std::string shortNumber(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", v);
+    return text;
+}
+
+std::string verdict(bool met) { return met ? "met" : "**not met**"; }
 
 }  // namespace rtlab::bench

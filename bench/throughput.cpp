@@ -155,6 +155,8 @@ std::vector<ThroughputRecord> runThroughput(const ThroughputOptions& options) {
                                 static_cast<double>(timing.stats.primitiveTests) / timing.stats.rays;
                             if (timing.stats.cellSteps > 0)
                                 r.cellStepsPerRay = static_cast<double>(timing.stats.cellSteps) / timing.stats.rays;
+                            if (timing.stats.planeSteps > 0)
+                                r.planeStepsPerRay = static_cast<double>(timing.stats.planeSteps) / timing.stats.rays;
                         }
                         r.bytesPerTriangle = system->bytesPerTriangle();
                         r.referencesPerTriangle = references;

@@ -37,6 +37,7 @@ struct ThroughputRecord {
     std::optional<double> nodeVisitsPerRay;
     std::optional<double> primitiveTestsPerRay;
     std::optional<double> cellStepsPerRay;  // grids: cells the 3D-DDA entered
+    std::optional<double> planeStepsPerRay; // KD-trees, BSP trees: split planes the traversal classified
     double bytesPerTriangle = 0.0;
     std::optional<double> referencesPerTriangle;  // rtlab's structures: references kept per triangle
     std::optional<uint64_t> mismatches;  // against Embree MEDIUM; none for Embree MEDIUM itself

@@ -25,6 +25,10 @@ std::vector<TestGroup> a4WithImages(GradingContext& context) {
     return withImages<a4Groups>(context, {"a4", "octree", "the renderer with --accel octree (a0 + a4 functions)"});
 }
 
+std::vector<TestGroup> a5WithImages(GradingContext& context) {
+    return withImages<a5Groups>(context, {"a5", "kdtree:build=sort", "the renderer with --accel kdtree:build=sort (a0 + a5 functions)"});
+}
+
 }  // namespace
 
 const std::vector<Assignment>& assignments() {
@@ -34,6 +38,7 @@ const std::vector<Assignment>& assignments() {
         {"a2", "SAH: full sweep and buckets", a2Groups, {"a0_intersect", "a1_bvh", "a2_sah"}},
         {"a3", "uniform grid and 3D-DDA", a3WithImages, {"a0_intersect", "a3_grid"}},
         {"a4", "octree: exact insertion and the parametric walk", a4WithImages, {"a0_intersect", "a4_octree"}},
+        {"a5", "KD-tree: the SAH with events, the leaf rule, front-to-back traversal", a5WithImages, {"a0_intersect", "a5_kdtree"}},
     };
     return list;
 }

@@ -112,6 +112,36 @@ std::vector<StressScene> stressScenes() {
                                        {ray({0.2f, 0.2f, 1}, {0, 0, -1}, 1.5f), true, false, {}, 0}};
         scenes.push_back({std::string("TRI-13 ") + (std::isnan(bad) ? "NaN" : "infinite") + " vertex", b.take(), rays});
     }
+    {
+        // 100 copies of one triangle, with BVH-01's set 10 below them: no plane lies strictly
+        // inside the copies' box, so a KD-tree must stop splitting them (a builder that splits
+        // until a child is smaller never ends).
+        SceneBuilder b;
+        std::vector<uint32_t> copies;
+        for (uint32_t i = 0; i < 100; ++i) {
+            b.addTriangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+            copies.push_back(i);
+        }
+        for (int a = 1; a <= 64; ++a) b.addTriangle({-float(a), -1, -11}, {float(a), -1, -9}, {0, 2, -10});
+        scenes.push_back({"KD-05 100 identical triangles", b.take(),
+                          {{ray({0.25f, 0.25f, 1}, {0, 0, -1}), false, true, copies, 1}, {ray({0.25f, 0.25f, 1}, {0, 0, -1}, 0.5f), true, false, {}, 0}}});
+    }
+    {
+        // Five triangles side by side in z = 0, their boxes abutting at x = 1 .. 4 (pbrt-v3#244):
+        // an End and a Start at every shared x. The ray at x = 2 meets triangle 2's edge only.
+        SceneBuilder b;
+        for (int k = 0; k < 5; ++k) b.addTriangle({float(k), 0, 0}, {float(k + 1), 0, 0}, {float(k), 1, 0});
+        scenes.push_back({"KD-06 five abutting coplanar triangles", b.take(),
+                          {{ray({2, 0.25f, 1}, {0, 0, -1}), false, true, {2}, 1},
+                           {ray({1.5f, 0.25f, 1}, {0, 0, -1}), false, true, {1}, 1},
+                           {ray({4.75f, 0.75f, 1}, {0, 0, -1}), false, false, {}, 0}}});
+    }
+    // Every box flat in z: zero-width grid cells and KD-tree nodes (square (4, 2)'s lower-right
+    // triangle is primitive 72); a ray in the plane hits nothing.
+    scenes.push_back({"GRID-06 a flat scene", flatScene().scene,
+                      {{ray({1.15f, 0.55f, 1}, {0, 0, -1}), false, true, {72}, 1},
+                       {ray({-1, 0.6f, 0}, {1, 0, 0}), false, false, {}, 0},
+                       {ray({1.15f, 0.55f, 1}, {0, 0, -1}, 0.5f), true, false, {}, 0}}});
     return scenes;
 }
 

@@ -119,6 +119,17 @@ TestScene cornellBox() {
     return TestScene{"cornell-box", "", builder.take(), false, Vec3(0.0f)};
 }
 
+TestScene flatScene() {
+    SceneBuilder builder;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 16; ++x) {
+            Vec3 a(0.25f * x, 0.25f * y, 0.0f);
+            builder.addTriangle(a, a + Vec3(0.25f, 0, 0), a + Vec3(0.25f, 0.25f, 0));
+            builder.addTriangle(a, a + Vec3(0.25f, 0.25f, 0), a + Vec3(0, 0.25f, 0));
+        }
+    return TestScene{"flat", "", builder.take(), false, Vec3(0.0f)};
+}
+
 TestScene bunnyOrStandIn(const std::string& modelsDir) {
     std::string path = modelsDir + "/bunny.gltf";
     std::string why;

@@ -42,6 +42,9 @@ TestScene triangleSoup(int count, uint64_t seed);
 // An axis-aligned room of quads on dyadic planes with two boxes and two spheres inside:
 // flat leaf boxes and shared edges on slab planes everywhere.
 TestScene cornellBox();
+// A flat scene: 16 x 8 squares of side 0.25, two triangles each, in the plane z = 0. Every box has
+// zero width in z: one grid cell thick, KD-tree nodes of zero width (stress catalogue GRID-06).
+TestScene flatScene();
 // modelsDir/bunny.gltf when it exists and loads; otherwise a bumpy closed sphere, with a note.
 TestScene bunnyOrStandIn(const std::string& modelsDir);
 

@@ -1,4 +1,4 @@
-// What the truth-table tests share (a3's and a4's): counting the cases of one test, and
+// What the truth-table tests share (a3, a4 and a5): counting the cases of one test, and
 // printing the vectors their inputs and answers are made of.
 #pragma once
 
@@ -14,6 +14,7 @@ class Tally {
 public:
     explicit Tally(TestResult& result) : result_(result) {}
 
+    // One case: an empty problem means it was answered right.
     void record(const std::string& id, const std::string& problem) {
         ++total_;
         if (problem.empty()) {

@@ -16,10 +16,14 @@ AcceleratorType bvhType();         // bvh_accelerator.cpp
 AcceleratorType gridType();        // grid/grid_accelerator.cpp
 AcceleratorType twoLevelGridType();  // grid/two_level_grid_accelerator.cpp
 AcceleratorType octreeType();        // octree/octree_accelerator.cpp
+AcceleratorType kdTreeType();        // kdtree/kdtree_accelerator.cpp
+AcceleratorType bspType();           // bsp/bsp_accelerator.cpp
 
 namespace {
 
-std::vector<AcceleratorType> frameworkTypes() { return {bruteForceType(), bvhType(), gridType(), twoLevelGridType(), octreeType()}; }
+std::vector<AcceleratorType> frameworkTypes() {
+    return {bruteForceType(), bvhType(), gridType(), twoLevelGridType(), octreeType(), kdTreeType(), bspType()};
+}
 
 // Function-local, so registrations from other files' static initialisers find it built
 // whatever order the linker puts those files in.

@@ -1,0 +1,48 @@
+#include "framework/accel/bsp/bsp_accelerator.h"
+
+#include "framework/accel/accelerator_registry.h"
+#include "framework/interface/a5_kdtree.h"
+
+namespace rtlab {
+
+void BspAccelerator::build(const PrimitiveSet& primitives) {
+    primitives_ = &primitives;
+    tree_ = buildBspAutopartition(primitives.allTriangles(), primitives.allBounds(), options_);
+}
+
+Hit BspAccelerator::intersect(const Ray& ray, TraversalStats& stats) const {
+    Hit hit;
+    hit.t = ray.tMax;
+    Traversal traversal(*primitives_, ray, stats);
+    intersectBsp(tree_, traversal, hit);
+    if (!hit.found()) hit.t = kInfinity;
+    return hit;
+}
+
+bool BspAccelerator::occluded(const Ray& ray, TraversalStats& stats) const {
+    Traversal traversal(*primitives_, ray, stats);
+    return occludedBsp(tree_, traversal);
+}
+
+StructureView BspAccelerator::structure() const {
+    StructureView view;
+    view.primIndices = tree_.primIndices;
+    for (const BspNode& node : tree_.nodes) view.nodes.push_back(StructureNode{tree_.bounds, 0, 0, node.firstPrim, node.primCount});
+    return view;
+}
+
+AcceleratorType bspType() {
+    return {"bsp",
+            "BSP tree on the triangles' own planes, an autopartition (a5, optional)",
+            {{"leaf", "a cell with at most this many primitives is a leaf", "2", 1, 65535, true, {}},
+             {"depth", "depth limit", "40", 1, kBspMaxDepthLimit, true, {}}},
+            [](const AcceleratorParameters& p) {
+                BspOptions options;
+                options.maxPrims = static_cast<uint32_t>(p.integer("leaf"));
+                options.maxDepth = p.integer("depth");
+                return std::make_unique<BspAccelerator>(options);
+            },
+            {}};  // no bench rows: an autopartition is taught, not tuned
+}
+
+}  // namespace rtlab

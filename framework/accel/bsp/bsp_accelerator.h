@@ -1,0 +1,26 @@
+// Wraps a5's optional BSP autopartition in the Accelerator interface (docs/bsp.md).
+#pragma once
+
+#include "framework/accel/accelerator.h"
+#include "framework/interface/bsp.h"
+
+namespace rtlab {
+
+class BspAccelerator final : public Accelerator {
+public:
+    explicit BspAccelerator(const BspOptions& options) : options_(options) {}
+
+    void build(const PrimitiveSet& primitives) override;
+    Hit intersect(const Ray& ray, TraversalStats& stats) const override;
+    bool occluded(const Ray& ray, TraversalStats& stats) const override;
+    // The nodes without boxes (a BSP cell is a convex polytope): each with the tree's box.
+    StructureView structure() const override;
+    size_t memoryBytes() const override { return tree_.nodes.size() * sizeof(BspNode) + tree_.primIndices.size() * sizeof(uint32_t); }
+
+private:
+    BspOptions options_;
+    const PrimitiveSet* primitives_ = nullptr;
+    BspTree tree_;
+};
+
+}  // namespace rtlab

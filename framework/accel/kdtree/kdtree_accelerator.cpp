@@ -1,0 +1,74 @@
+#include "framework/accel/kdtree/kdtree_accelerator.h"
+
+#include "framework/accel/accelerator_registry.h"
+#include "framework/interface/a5_kdtree.h"
+
+namespace rtlab {
+
+void KdTreeAccelerator::build(const PrimitiveSet& primitives) {
+    primitives_ = &primitives;
+    tree_ = builder_ == KdBuilder::NlogN ? buildKdTreeNlogN(primitives.allBounds(), options_) : buildKdTree(primitives.allBounds(), options_);
+}
+
+Hit KdTreeAccelerator::intersect(const Ray& ray, TraversalStats& stats) const {
+    Hit hit;
+    hit.t = ray.tMax;
+    Traversal traversal(*primitives_, ray, stats);
+    intersectKdTree(tree_, traversal, hit);
+    if (!hit.found()) hit.t = kInfinity;
+    return hit;
+}
+
+bool KdTreeAccelerator::occluded(const Ray& ray, TraversalStats& stats) const {
+    Traversal traversal(*primitives_, ray, stats);
+    return occludedKdTree(tree_, traversal);
+}
+
+StructureView KdTreeAccelerator::structure() const {
+    StructureView view;
+    view.primIndices = tree_.primIndices;
+    if (tree_.nodes.empty()) return view;
+    // Depth first from the root, with each node's box: a KD-tree node stores its plane, not its box.
+    auto visit = [&](auto&& self, uint32_t index, const Bounds3f& box) -> uint32_t {
+        const KdNode& node = tree_.nodes[index];
+        uint32_t at = static_cast<uint32_t>(view.nodes.size());
+        view.nodes.push_back(StructureNode{box, 0, 0, 0, 0});
+        if (node.isLeaf()) {
+            view.nodes[at].firstPrim = node.firstPrim();
+            view.nodes[at].primCount = node.primCount();
+            return at;
+        }
+        Bounds3f below = box, above = box;
+        below.upper[node.axis()] = above.lower[node.axis()] = node.split();
+        uint32_t first = self(self, index + 1, below), second = self(self, node.aboveChild(), above);
+        view.nodes[at].firstChild = static_cast<uint32_t>(view.children.size());
+        view.nodes[at].childCount = 2;
+        view.children.push_back(first);
+        view.children.push_back(second);
+        return at;
+    };
+    visit(visit, 0, tree_.bounds);
+    return view;
+}
+
+AcceleratorType kdTreeType() {
+    return {"kdtree",
+            "KD-tree built by the SAH, traversed front to back (a5)",
+            {{"build", "builder: nlogn (Wald-Havran, events sorted once) or sort (every node sorts its own)", "nlogn", 0, 0, false,
+              {"nlogn", "sort"}},
+             {"KT", "SAH cost of a plane step (K_T)", "1", 0, 1000, false, {}},
+             {"KI", "SAH cost of a primitive test (K_I)", "80", 0.001, 1000, false, {}},
+             {"eb", "empty-space bonus: the share of a split's cost forgiven when a side is empty", "0.5", 0, 1, false, {}},
+             {"leaf", "a node with at most this many primitives is a leaf (maxPrims)", "1", 1, 65535, true, {}},
+             {"depth", "depth limit; 0: round(8 + 1.3 floor(log2 N))", "0", 0, kKdMaxDepthLimit, true, {}}},
+            [](const AcceleratorParameters& p) {
+                KdTreeOptions options;
+                options.costs = KdCosts{p.number("KT"), p.number("KI"), p.number("eb")};
+                options.maxPrims = static_cast<uint32_t>(p.integer("leaf"));
+                options.maxDepth = p.integer("depth");
+                return std::make_unique<KdTreeAccelerator>(options, p.word("build") == "sort" ? KdBuilder::Sort : KdBuilder::NlogN);
+            },
+            {"kdtree", "kdtree:build=sort"}};
+}
+
+}  // namespace rtlab

@@ -1,0 +1,32 @@
+// Wraps the KD-tree of assignment a5 in the Accelerator interface: building runs the student's
+// buildKdTree (build=sort) or buildKdTreeNlogN (build=nlogn), queries the student's traversal.
+#pragma once
+
+#include "framework/accel/accelerator.h"
+#include "framework/interface/kdtree.h"
+
+namespace rtlab {
+
+enum class KdBuilder { NlogN, Sort };
+
+class KdTreeAccelerator final : public Accelerator {
+public:
+    KdTreeAccelerator(const KdTreeOptions& options, KdBuilder builder) : options_(options), builder_(builder) {}
+
+    void build(const PrimitiveSet& primitives) override;
+    Hit intersect(const Ray& ray, TraversalStats& stats) const override;
+    bool occluded(const Ray& ray, TraversalStats& stats) const override;
+    // Every node with its box (the root's box cut by the planes above it), below child first.
+    StructureView structure() const override;
+    size_t memoryBytes() const override { return tree_.nodes.size() * sizeof(KdNode) + tree_.primIndices.size() * sizeof(uint32_t); }
+
+    const KdTree& tree() const { return tree_; }
+
+private:
+    KdTreeOptions options_;
+    KdBuilder builder_;
+    const PrimitiveSet* primitives_ = nullptr;
+    KdTree tree_;
+};
+
+}  // namespace rtlab
