@@ -4,7 +4,7 @@ know each other do not.
 
 Every #include "a/b/c.h" in a tracked .cpp or .h file is an edge from the including file's
 layer to the included file's layer. Layers are framework/<part> (core, interface, scene, accel,
-oracle, render, pov), grader (with grader/worker), cli, fast, bench, fuzz, assignments,
+oracle, sampling, render, pov), grader (with grader/worker), cli, fast, bench, fuzz, assignments,
 solutions and tests. ALLOWED lists, for each layer, the layers it may include besides itself;
 any other edge is printed as FILE:LINE and fails the test, and so does a file in a layer the
 table does not know (a new folder must say where it sits).
@@ -16,7 +16,7 @@ import re
 import subprocess
 import sys
 
-FRAMEWORK = {"framework/" + p for p in ("core", "interface", "scene", "accel", "oracle", "render", "pov")}
+FRAMEWORK = {"framework/" + p for p in ("core", "interface", "scene", "accel", "oracle", "sampling", "render", "pov")}
 
 ALLOWED = {
     "framework/core": set(),
@@ -25,7 +25,10 @@ ALLOWED = {
     "framework/scene": {"framework/core"},
     "framework/accel": {"framework/core", "framework/interface", "framework/scene"},
     "framework/oracle": {"framework/core", "framework/scene"},
-    "framework/render": {"framework/core", "framework/interface", "framework/scene", "framework/accel", "framework/oracle"},
+    # Random numbers and stratification for the renderer, the bench and the grader.
+    "framework/sampling": {"framework/core"},
+    "framework/render": {"framework/core", "framework/interface", "framework/scene", "framework/accel", "framework/oracle",
+                         "framework/sampling"},
     "framework/pov": {"framework/core", "framework/scene", "framework/oracle", "framework/render"},
     # Student code and the reference solutions: only the contract.
     "assignments": {"framework/core", "framework/interface"},
