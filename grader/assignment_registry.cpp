@@ -29,6 +29,7 @@ const std::vector<Assignment>& assignments() {
         {"a1", "BVH with median, middle and equal-counts splits", a1WithImages, {"a0_intersect", "a1_bvh"}},
         {"a2", "SAH: full sweep and buckets", a2Groups, {"a0_intersect", "a1_bvh", "a2_sah"}},
         {"a3", "uniform grid and 3D-DDA", a3WithImages, {"a0_intersect", "a3_grid"}},
+        {"a6", "radiometry and Monte Carlo direct lighting", a6Groups, {"a6_radiometry"}},
     };
     return list;
 }

@@ -11,6 +11,16 @@ const char* testStatusName(TestStatus status) {
     return "?";
 }
 
+void CaseTally::record(const std::string& id, const std::string& problem) {
+    ++total_;
+    if (problem.empty()) {
+        ++passed_;
+        return;
+    }
+    result_.details.push_back(id + ": " + problem);
+    if (first_.empty()) first_ = id + ": " + problem;
+}
+
 void setFromCounts(TestResult& result, size_t passed, size_t total, const std::string& firstFailure) {
     result.fraction = total == 0 ? 0.0 : double(passed) / double(total);
     if (total > 0 && passed == total) {
