@@ -73,7 +73,7 @@ ConvergenceOptions estimatorComparison(const std::string& scenePath, bool quick)
     options.scene = scenePath;
     options.width = 96;
     options.height = 72;
-    options.referenceSpp = 16384;
+    options.referenceSpp = 4096;
     options.samplings = {LightSampling::SolidAngle, LightSampling::Area, LightSampling::Cosine, LightSampling::Hemisphere};
     if (quick) {
         options = quickConvergence(options);
