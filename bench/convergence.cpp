@@ -42,14 +42,20 @@ double seconds(std::chrono::steady_clock::time_point since) {
 }
 
 // 1 / (MSE x seconds) at the largest sample count of each sampling: the inverse of the work
-// needed for a given error, when the error falls as N^-1/2.
+// needed for a given error. The seconds are that count times the series' mean time per sample
+// (all its renders together), steadier on a shared machine than one render's time.
 std::vector<std::pair<LightSampling, double>> efficiencies(const ConvergenceResult& result) {
     std::vector<std::pair<LightSampling, double>> out;
     for (LightSampling sampling : result.options.samplings) {
         const ConvergencePoint* last = nullptr;
+        double seconds = 0.0, samples = 0.0;
         for (const ConvergencePoint& p : result.points)
-            if (p.sampling == sampling) last = &p;
-        if (last) out.emplace_back(sampling, 1.0 / (last->rmse * last->rmse * last->seconds));
+            if (p.sampling == sampling) {
+                last = &p;
+                seconds += p.seconds;
+                samples += p.spp;
+            }
+        if (last) out.emplace_back(sampling, 1.0 / (last->rmse * last->rmse * last->spp * seconds / samples));
     }
     return out;
 }
@@ -154,7 +160,8 @@ void writeConvergenceMarkdown(std::ostream& out, const ConvergenceResult& result
     auto eff = efficiencies(result);
     double best = 0.0;
     for (const auto& [sampling, e] : eff) best = std::max(best, e);
-    out << "\nEfficiency 1 / (MSE x render time) at " << o.spp.back() << " spp, relative to the best:\n\n"
+    out << "\nEfficiency 1 / (MSE x render time) at " << o.spp.back() << " spp (the time from the series' mean time per "
+        << "sample), relative to the best:\n\n"
         << "| light sampling | efficiency | relative |\n|---|--:|--:|\n";
     for (const auto& [sampling, e] : eff) {
         char line[128];

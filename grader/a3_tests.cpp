@@ -47,28 +47,6 @@ GridCell readCell(ByteReader& in) {
     return c;
 }
 
-// Counts a truth table's cases; the first wrong one becomes the reason, every one a detail.
-class Tally {
-public:
-    explicit Tally(TestResult& result) : result_(result) {}
-
-    void record(const std::string& id, const std::string& problem) {
-        ++total_;
-        if (problem.empty()) {
-            ++passed_;
-            return;
-        }
-        result_.details.push_back(id + ": " + problem);
-        if (first_.empty()) first_ = id + ": " + problem;
-    }
-    void finish() { setFromCounts(result_, passed_, total_, first_); }
-
-private:
-    TestResult& result_;
-    size_t passed_ = 0, total_ = 0;
-    std::string first_;
-};
-
 // A frame of 4 x 2 x 2 unit cells over [0,4] x [0,2] x [-1,1]: every boundary is dyadic.
 GridFrame unitFrame() { return frameOf(Bounds3f(Vec3(0, 0, -1), Vec3(4, 2, 1)), {4, 2, 2}); }
 
@@ -109,7 +87,7 @@ TestGroup resolutionGroup() {
         TestResult result = makeResult(kA3, "a3/cells/resolution");
         if (!failedPhaseResult(run.phases[0], result)) {
             ByteReader in(run.phases[0].data);
-            Tally tally(result);
+            CaseTally tally(result);
             for (const ResolutionCase& c : *cases) {
                 GridCell got = readCell(in);
                 tally.record(c.id, got == c.expected ? "" : "expected " + describeCell(c.expected) + ", got " + describeCell(got));
@@ -188,7 +166,7 @@ TestGroup cellGroup() {
     group.score = [points, flatPoints, ranges](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult cells = makeResult(kA3, "a3/cells/cell-of-point"), range = makeResult(kA3, "a3/cells/cell-range");
         if (!failedPhaseResult(run.phases[0], cells) && !failedPhaseResult(run.phases[1], cells)) {
-            Tally tally(cells);
+            CaseTally tally(cells);
             for (size_t k = 0; k < 2; ++k) {
                 ByteReader in(run.phases[k].data);
                 for (const PointCase& c : k == 0 ? *points : *flatPoints) {
@@ -201,7 +179,7 @@ TestGroup cellGroup() {
         }
         if (!failedPhaseResult(run.phases[2], range)) {
             ByteReader in(run.phases[2].data);
-            Tally tally(range);
+            CaseTally tally(range);
             for (const RangeCase& c : *ranges) {
                 GridCell lower = readCell(in), upper = readCell(in);
                 bool right = lower == c.lower && upper == c.upper;
@@ -317,7 +295,7 @@ TestGroup ddaGroup() {
         TestResult setup = makeResult(kA3, "a3/dda/setup"), step = makeResult(kA3, "a3/dda/step");
         if (!failedPhaseResult(run.phases[0], setup)) {
             ByteReader in(run.phases[0].data);
-            Tally tally(setup);
+            CaseTally tally(setup);
             for (const SetupCase& c : *setups)
                 tally.record(std::string(c.id) + " " + describeRay(c.call.ray) + " tEnter " + formatNumber(c.call.tEnter),
                              stateProblem(c.expected, in.get<DdaState>()));
@@ -325,7 +303,7 @@ TestGroup ddaGroup() {
         }
         if (!failedPhaseResult(run.phases[1], step)) {
             ByteReader in(run.phases[1].data);
-            Tally tally(step);
+            CaseTally tally(step);
             for (const StepCase& c : *steps) {
                 bool inside = in.get<uint8_t>() != 0;
                 std::string problem = stateProblem(c.expected, in.get<DdaState>());
@@ -405,7 +383,7 @@ TestGroup cellOrderGroup(uint64_t seed) {
     }
     group.score = [expected](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult result = makeResult(kA3, "a3/dda/cell-order");
-        Tally tally(result);
+        CaseTally tally(result);
         for (size_t f = 0; f < expected->size(); ++f) {
             if (failedPhaseResult(run.phases[f], result)) {
                 results.push_back(std::move(result));

@@ -295,6 +295,11 @@ std::vector<EstimatorCase> directionCases(Estimator estimator) {
     make("D2 a tilted point, both lights to its side", at({0.3f, -0.2f, 0.0f}, {0.3f, 0.1f, 1.0f}),
          TriangleEmitter{{1.5f, 0.2f, 0.8f}, {1.4f, 1.1f, 1.9f}, {2.2f, 0.9f, 1.6f}, kRadiance, false},
          SphereEmitter{{-0.6f, 1.4f, 1.5f}, 0.4f, kRadiance});
+    // A point on a wall: half of what it sees lies below z = 0, where directions about +z that
+    // were never turned to the normal do not go.
+    make("D3 a point on a wall (normal +x), lights in front of it reaching below z = 0", at(Vec3(0.0f), {1.0f, 0.0f, 0.0f}),
+         TriangleEmitter{{1.2f, -0.5f, -1.0f}, {1.2f, 0.6f, -0.8f}, {1.2f, 0.0f, 0.4f}, kRadiance, false},
+         SphereEmitter{{1.6f, 1.2f, -0.7f}, 0.35f, kRadiance});
     return cases;
 }
 

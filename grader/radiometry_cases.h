@@ -33,7 +33,8 @@ std::vector<EstimatorCase> pointLightCases();
 std::vector<EstimatorCase> triangleLightCases(worker::Estimator estimator);
 // Estimator SphereByArea or SphereBySolidAngle.
 std::vector<EstimatorCase> sphereLightCases(worker::Estimator estimator);
-// Estimator UniformHemisphere or CosineHemisphere: a triangle and a sphere light together.
+// Estimator UniformHemisphere or CosineHemisphere: a triangle and a sphere light together, seen
+// from a point facing up, a tilted one and one on a wall.
 std::vector<EstimatorCase> directionCases(worker::Estimator estimator);
 
 }  // namespace rtlab::grader

@@ -71,7 +71,7 @@ RenderResult render(const Scene& scene, const Camera& camera, const Render& r) {
     return Renderer(scene, camera, *accelerator).render(settings);
 }
 
-// The expected value of each pixel: the radiance at the ground (y = 0) point each of 4 x 4 film
+// The expected value of each pixel: the radiance at the ground (y = 0) point each of 8 x 8 film
 // positions sees, averaged; nullopt where a position misses the ground (|x|, |z| <= half).
 using GroundRadiance = std::function<double(const DVec3& point)>;
 
@@ -145,6 +145,17 @@ int samplesFor(LightSampling sampling) {
     return sampling == LightSampling::Area || sampling == LightSampling::SolidAngle ? 64 : 1024;
 }
 
+// A 48 x 36 render of the ground (|x|, |z| <= 10 at y = 0) with each light sampling, unbiased
+// against `exact`.
+void checkEveryLightSampling(const Scene& scene, const Camera& camera, const GroundRadiance& exact, uint64_t seed) {
+    auto expected = expectedPixels(camera, 48, 36, 10.0, exact);
+    for (LightSampling sampling : kLightSamplings) {
+        CAPTURE(std::string(lightSamplingName(sampling)));
+        RenderResult result = render(scene, camera, {.spp = samplesFor(sampling), .seed = seed, .sampling = sampling});
+        checkUnbiased(residuals(result.colour, expected));
+    }
+}
+
 }  // namespace
 
 TEST_CASE("area lights: scenes/radiometry/closed-form.gltf against Lambert's contour formula, every light sampling") {
@@ -164,13 +175,7 @@ TEST_CASE("area lights: scenes/radiometry/closed-form.gltf against Lambert's con
         for (const auto& triangle : light) e += polygonIrradiance(p, {0, 1, 0}, triangle);
         return albedo / kPi * radiance * e;
     };
-    const Camera& camera = scene.cameras.front();
-    auto expected = expectedPixels(camera, 48, 36, 10.0, exact);
-    for (LightSampling sampling : kLightSamplings) {
-        CAPTURE(std::string(lightSamplingName(sampling)));
-        RenderResult result = render(scene, camera, {.spp = samplesFor(sampling), .seed = 7, .sampling = sampling});
-        checkUnbiased(residuals(result.colour, expected));
-    }
+    checkEveryLightSampling(scene, scene.cameras.front(), exact, 7);
 }
 
 TEST_CASE("area lights: a sphere light over a plane against pi L sin^2(alpha) cos(theta), every light sampling") {
@@ -183,12 +188,7 @@ TEST_CASE("area lights: a sphere light over a plane against pi L sin^2(alpha) co
     GroundRadiance exact = [&](const DVec3& p) {
         return 0.7 / kPi * radiance * sphereIrradiance(p, {0, 1, 0}, centre, radius);
     };
-    auto expected = expectedPixels(camera, 48, 36, 10.0, exact);
-    for (LightSampling sampling : kLightSamplings) {
-        CAPTURE(std::string(lightSamplingName(sampling)));
-        RenderResult result = render(scene, camera, {.spp = samplesFor(sampling), .seed = 11, .sampling = sampling});
-        checkUnbiased(residuals(result.colour, expected));
-    }
+    checkEveryLightSampling(scene, camera, exact, 11);
 }
 
 TEST_CASE("area lights: an emitter is seen from its front face, from both when doubleSided") {
