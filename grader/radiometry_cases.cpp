@@ -298,7 +298,7 @@ std::vector<EstimatorCase> directionCases(Estimator estimator) {
     // A point on a wall: half of what it sees lies below z = 0, where directions about +z that
     // were never turned to the normal do not go.
     make("D3 a point on a wall (normal +x), lights in front of it reaching below z = 0", at(Vec3(0.0f), {1.0f, 0.0f, 0.0f}),
-         TriangleEmitter{{1.2f, -0.5f, -1.0f}, {1.2f, 0.6f, -0.8f}, {1.2f, 0.0f, 0.4f}, kRadiance, false},
+         TriangleEmitter{{1.2f, -0.5f, -1.0f}, {1.2f, 0.0f, 0.4f}, {1.2f, 0.6f, -0.8f}, kRadiance, false},  // facing -x
          SphereEmitter{{1.6f, 1.2f, -0.7f}, 0.35f, kRadiance});
     return cases;
 }
