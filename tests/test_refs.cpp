@@ -2,7 +2,7 @@
 // re-renders what changed, --check catches a modified reference, --hits agrees with the oracle.
 // Runs live POV-Ray.
 #include "cli/commands.h"
-#include "framework/pov/reference_manifest.h"
+#include "framework/external/reference_manifest.h"
 #include "framework/render/image_io.h"
 
 #include <doctest/doctest.h>
@@ -62,7 +62,7 @@ TEST_CASE("rtlab refs: render, skip when up to date, re-render and --check when 
     CHECK(entry.scene == "scenes/light-behind.gltf");
     CHECK(entry.inputs.size() == 1);
     CHECK(entry.settings == "+W64 +H48 -A -D +FN16 File_Gamma=1.0 +WT1");
-    CHECK(entry.povray.rfind("POV-Ray 3.7", 0) == 0);
+    CHECK(entry.renderer.rfind("POV-Ray 3.7", 0) == 0);
     CHECK(readImage(image.string()).width == 64);
 
     CliResult second = runCli(with({"refs"}));
