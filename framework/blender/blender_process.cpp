@@ -42,7 +42,7 @@ void runBlenderOrThrow(const std::vector<std::string>& arguments, TemporaryDirec
     if (run.succeeded()) return;
     work.keep();
     if (run.timedOut)
-        throw Error("blender took longer than " + std::to_string(int(timeLimitSeconds)) + " s " + what +
+        throw Error("blender took longer than " + secondsText(timeLimitSeconds) + " s " + what +
                     " (killed); log: " + logPath.string());
     std::string reason = lastErrorLine(logPath);
     throw Error("blender failed (exit " + std::to_string(run.exitStatus) + ") " + what +

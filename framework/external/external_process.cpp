@@ -11,6 +11,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cstring>
+#include <sstream>
 #include <thread>
 
 extern char** environ;
@@ -76,6 +77,12 @@ ExternalRun runExternal(const std::string& program, const std::vector<std::strin
     run.exitStatus = statusOf(status);
     run.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return run;
+}
+
+std::string secondsText(double seconds) {
+    std::ostringstream out;
+    out << seconds;
+    return out.str();
 }
 
 }  // namespace rtlab

@@ -26,4 +26,7 @@ ExternalRun runExternal(const std::string& program, const std::vector<std::strin
                         const std::filesystem::path& workDir, const std::filesystem::path& logPath,
                         double timeLimitSeconds, const std::string& hint);
 
+// A time limit as people write it: 600, 0.5.
+std::string secondsText(double seconds);
+
 }  // namespace rtlab

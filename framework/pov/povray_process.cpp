@@ -32,7 +32,7 @@ void runPovrayOrThrow(const std::vector<std::string>& arguments, TemporaryDirect
     if (run.succeeded()) return;
     work.keep();
     if (run.timedOut)
-        throw Error("povray took longer than " + std::to_string(int(kPovrayTimeLimitSeconds)) + " s " + what +
+        throw Error("povray took longer than " + secondsText(kPovrayTimeLimitSeconds) + " s " + what +
                     " (killed); log: " + logPath.string());
     std::string reason = firstErrorLine(logPath);
     throw Error("povray failed (exit " + std::to_string(run.exitStatus) + ") " + what +
