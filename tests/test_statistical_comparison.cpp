@@ -85,23 +85,47 @@ TEST_CASE("statistical comparison: a reference equal to our mean passes; one pix
     CHECK(without.pixelValues == (kWidth * kHeight - 1) * 3);
 }
 
-TEST_CASE("statistical comparison: without variance (point lights) only the reference's own error is allowed") {
+TEST_CASE("statistical comparison: without variance (point lights) the floor and the reference's error remain") {
+    // Four equal replicates of 0.5: variance 0, so the floor applies, 0.01 x the reference's
+    // mean per sample, 0.01 x 0.5005 / sqrt(4) = 0.0025 per pixel mean.
     ReplicateStatistics constant;
-    constant.add(filled(0.5f));
-    constant.add(filled(0.5f));
+    for (int k = 0; k < 4; ++k) constant.add(filled(0.5f));
     CHECK(compareStatistically(constant, filled(0.5f)).passes());
-    // 0.1 % high: pixel z = -5e-4 / (2.5e-3 x 0.5005) = -0.40, region z = -5e-4 / (5e-4 x 0.5005) = -2.0.
+    // 0.1 % high: pixel z = -5e-4 / sqrt(0.0025^2 + (2.5e-3 x 0.5005)^2) = -0.18, region z =
+    // -5e-4 / sqrt((0.005005 / 4)^2 + (5e-4 x 0.5005)^2) = -0.39.
     CHECK(compareStatistically(constant, filled(0.5f * 1.001f)).passes());
-    // 2 % high: pixel z = -0.01 / (2.5e-3 x 0.51) = -7.8 and region z = -39: both families fail.
-    StatisticalComparison high = compareStatistically(constant, filled(0.5f * 1.02f));
+    // 5 % high: pixel z = -0.025 / sqrt(0.002625^2 + (2.5e-3 x 0.525)^2) = -8.5 and region
+    // z = -0.025 / sqrt(0.0013125^2 + (5e-4 x 0.525)^2) = -18.7: both families fail.
+    StatisticalComparison high = compareStatistically(constant, filled(0.5f * 1.05f));
     CHECK(high.regionFailures() == 36);
     CHECK(high.pixelFailures == kWidth * kHeight * 3);
-    // Zero against zero passes, a light where the reference has none fails.
+    CHECK(high.worstPixelZ == doctest::Approx(-8.52).epsilon(2e-3));
+    // Zero against zero passes (the floor of an all-black reference is 0); a light where the
+    // reference has none fails.
     ReplicateStatistics dark;
     dark.add(filled(0.0f));
     dark.add(filled(0.0f));
     CHECK(compareStatistically(dark, filled(0.0f)).passes());
     CHECK_FALSE(compareStatistically(constant, filled(0.0f)).passes());
+}
+
+TEST_CASE("statistical comparison: a pixel whose samples happen to be equal borrows the variance around it") {
+    // Every pixel alternates 1.1, 0.9 (variance 0.01333) but (2, 2), which is 1 four times.
+    ReplicateStatistics ours;
+    for (int k = 0; k < 4; ++k) {
+        Image replicate = filled(k % 2 ? 0.9f : 1.1f);
+        setPixel(replicate, 2, 2, 1.0f);
+        ours.add(replicate);
+    }
+    Image reference = filled(1.0f);
+    setPixel(reference, 2, 2, 1.2f);
+    // With its own variance 0 it would be z = -0.2 / (2.5e-3 x 1.2) = -67. Its 3 x 3
+    // neighbourhood has 8 pixels with a variance, fewer than 9; the 5 x 5 one has 24, mean
+    // variance 24/25 x 0.01333 = 0.0128: z = -0.2 / sqrt(0.0128 / 4 + (3e-3)^2) = -3.53, inside
+    // the threshold of 3.97.
+    StatisticalComparison c = compareStatistically(ours, reference);
+    CHECK(c.pixelFailures == 0);
+    CHECK(c.worstPixelZ == doctest::Approx(-3.53).epsilon(2e-3));
 }
 
 TEST_CASE("statistical comparison: a NaN or infinite reference pixel fails, mismatched sizes are refused") {
