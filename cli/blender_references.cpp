@@ -1,5 +1,5 @@
 // Blender Cycles as the reference renderer of `rtlab refs --blender`
-// (docs/verification.md#blender-cycles-references): 32-bit EXRs of the radiometry scenes of
+// (docs/verification.md#6-blender-cycles-references): 32-bit EXRs of the radiometry scenes of
 // scenes/radiometry/, and the statistical comparison our renderer must pass against them.
 #include "cli/reference_renderer.h"
 #include "cli/statistical_report.h"

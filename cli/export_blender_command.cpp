@@ -40,7 +40,7 @@ void addExportBlenderCommand(CLI::App& app) {
     CLI::App* command = app.add_subcommand(
         "export-blender",
         "Write a glTF scene as a Blender 3.4 script that renders, with Cycles, the radiance rtlab renders "
-        "(docs/verification.md#blender-cycles-references)");
+        "(docs/verification.md#6-blender-cycles-references)");
     command->add_option("scene", options->scenePath, "glTF 2.0 scene (.gltf or .glb)")->required();
     command->add_option("-o,--output", options->outputPath, "The .py file to write")->required();
     command->add_option("--camera", options->cameraName, "Camera by name (default: the first)");

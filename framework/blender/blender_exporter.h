@@ -1,6 +1,6 @@
 // Writes a Scene as a Python script for Blender 3.4 that builds it natively and renders it with
 // Cycles, direct light only, into a 32-bit EXR of the radiance our renderer computes (recipe,
-// conventions and measurements: docs/verification.md#blender-cycles-references):
+// conventions and measurements: docs/verification.md#6-blender-cycles-references):
 //  - camera: perspective, vertical field of view = ours, pixel centres as ours (a 0.01 px
 //    pixel filter, so every sample is taken at the pixel centre);
 //  - point lights in watts: Blender's point light of power P has intensity P / 4 pi W/sr, so

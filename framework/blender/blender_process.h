@@ -11,7 +11,7 @@
 namespace rtlab {
 
 // The longest a Blender run may take before it is killed: a 160x120 reference at 512 samples
-// takes about half a minute on two loaded cores (docs/verification.md#blender-cycles-references).
+// takes about half a minute on two loaded cores (docs/verification.md#6-blender-cycles-references).
 inline constexpr double kBlenderTimeLimitSeconds = 1200.0;
 
 // "blender", or $RTLAB_BLENDER when it is set and not empty.

@@ -1,7 +1,7 @@
 // Cutting an emissive triangle into smaller ones for Blender. Cycles 3.4 samples a mesh light's
 // triangle by solid angle when its longest edge is longer than the shading point's distance
-// to the triangle's plane, and that path is biased low (up to 1.3 % for a 1 m square of two
-// triangles 1 m above a plane; docs/verification.md#blender-cycles-references); with short
+// to the triangle's plane, and that path is biased low (a 1 m square of two triangles 1 m above
+// a plane: 4 % low far from it; docs/verification.md#6-blender-cycles-references); with short
 // edges it samples by area, without bias.
 #pragma once
 
@@ -23,8 +23,8 @@ struct TriangleCut {
 int cutsPerEdge(const std::array<Vec3, 3>& vertices, double maxEdge);
 
 // Cuts the triangle p0 p1 p2 into k^2 triangles similar to it (k parts per edge): the points
-// p0 + (i/k)(p1 - p0) + (j/k)(p2 - p0), i + j <= k, computed in double (the corners exactly); each part keeps the
-// winding of p0 p1 p2, so it emits from the same side. Normals (optional: empty or three) are
+// p0 + (i/k)(p1 - p0) + (j/k)(p2 - p0), i + j <= k, computed in double (the corners exactly);
+// each part keeps the winding of p0 p1 p2, so it emits from the same side. Normals (optional: empty or three) are
 // interpolated the same way and normalised.
 TriangleCut cutTriangle(const std::array<Vec3, 3>& vertices, const std::vector<Vec3>& normals, int k);
 
