@@ -1,21 +1,20 @@
 // The Blender exporter without Blender (framework/blender/): the cut of emissive triangles, the
 // conversions written into the script, one-line errors for what it cannot export, and the
 // one-line error when Blender is missing. tests/test_blender_renders.cpp renders with Blender.
-#include "cli/commands.h"
 #include "framework/blender/blender_exporter.h"
 #include "framework/blender/blender_reference.h"
 #include "framework/blender/emitter_tessellation.h"
 #include "framework/core/error.h"
 #include "tests/blender_test_scenes.h"
+#include "tests/cli_runner.h"
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
 #include <numbers>
-#include <sstream>
 
 using namespace rtlab;
 namespace fs = std::filesystem;
@@ -24,20 +23,6 @@ namespace {
 
 double area(const Vec3& a, const Vec3& b, const Vec3& c) {
     return 0.5 * glm::length(glm::cross(DVec3(b) - DVec3(a), DVec3(c) - DVec3(a)));
-}
-
-// Runs rtlab with the arguments; returns the exit status and what it wrote to stderr.
-std::pair<int, std::string> runCliErrors(std::vector<std::string> arguments) {
-    arguments.insert(arguments.begin(), "rtlab");
-    std::vector<char*> argv;
-    for (std::string& a : arguments) argv.push_back(a.data());
-    std::ostringstream captured, ignored;
-    std::streambuf* err = std::cerr.rdbuf(captured.rdbuf());
-    std::streambuf* out = std::cout.rdbuf(ignored.rdbuf());
-    int status = cli::run(static_cast<int>(argv.size()), argv.data());
-    std::cerr.rdbuf(err);
-    std::cout.rdbuf(out);
-    return {status, captured.str()};
 }
 
 fs::path outputDir() {
@@ -132,15 +117,15 @@ TEST_CASE("rtlab export-blender: a malformed scene is one line and writes nothin
     std::ofstream(bad) << "{ not json";
     fs::path script = outputDir() / "never.py";
     fs::remove(script);
-    auto [status, errors] = runCliErrors({"export-blender", bad.string(), "-o", script.string()});
-    CHECK(status == 1);
-    CHECK(errors.rfind("rtlab: " + bad.string(), 0) == 0);
-    CHECK(std::count(errors.begin(), errors.end(), '\n') == 1);
+    test::CliResult malformed = test::runCli({"export-blender", bad.string(), "-o", script.string()});
+    CHECK(malformed.status == 1);
+    CHECK(malformed.err.rfind("rtlab: " + bad.string(), 0) == 0);
+    CHECK(std::count(malformed.err.begin(), malformed.err.end(), '\n') == 1);
     CHECK_FALSE(fs::exists(script));
-    auto [sphereStatus, sphereErrors] = runCliErrors(
+    test::CliResult sphere = test::runCli(
         {"export-blender", RTLAB_SOURCE_DIR "/scenes/radiometry/sphere-light.gltf", "-o", script.string()});
-    CHECK(sphereStatus == 1);
-    CHECK(sphereErrors.find("a sphere light") != std::string::npos);
+    CHECK(sphere.status == 1);
+    CHECK(sphere.err.find("a sphere light") != std::string::npos);
     CHECK_FALSE(fs::exists(script));
 }
 
@@ -156,8 +141,8 @@ TEST_CASE("blender: a missing Blender is one line naming scripts/install-deps --
         CHECK(message.find("scripts/install-deps --blender") != std::string::npos);
         CHECK(message.find('\n') == std::string::npos);
     }
-    auto [status, errors] = runCliErrors({"refs", "--blender", "--scenes", RTLAB_SOURCE_DIR "/scenes", "--check"});
-    CHECK(status == 1);
-    CHECK(errors.find("scripts/install-deps --blender") != std::string::npos);
+    test::CliResult refs = test::runCli({"refs", "--blender", "--scenes", RTLAB_SOURCE_DIR "/scenes", "--check"});
+    CHECK(refs.status == 1);
+    CHECK(refs.err.find("scripts/install-deps --blender") != std::string::npos);
     unsetenv("RTLAB_BLENDER");
 }

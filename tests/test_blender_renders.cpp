@@ -6,7 +6,6 @@
 // the emitter cut, the `rtlab refs --blender` workflow, and one-line errors with the log kept.
 // Small images (at most 64x48), references at the 512 samples per pixel the tolerances of the
 // statistical comparison are measured for: seconds per case.
-#include "cli/commands.h"
 #include "framework/accel/accelerator.h"
 #include "framework/blender/blender_process.h"
 #include "framework/blender/blender_reference.h"
@@ -22,17 +21,18 @@
 #include "framework/scene/emitters.h"
 #include "framework/scene/gltf_loader.h"
 #include "tests/blender_test_scenes.h"
+#include "tests/cli_runner.h"
 
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
 #include <numbers>
-#include <sstream>
 
 using namespace rtlab;
+using test::CliResult;
+using test::runCli;
 namespace fs = std::filesystem;
 
 namespace {
@@ -79,22 +79,6 @@ StatisticalComparison compareWithOurs(const Scene& scene, const Image& reference
     ReplicateStatistics statistics = renderReplicates(scene, camera, *accelerator, settings, replicates);
     return compareStatistically(statistics, reference,
                                 findEdgePixels(scene, camera, *accelerator, reference.width, reference.height));
-}
-
-struct CliResult {
-    int status = 0;
-    std::string out;
-};
-
-CliResult runCli(std::vector<std::string> arguments) {
-    arguments.insert(arguments.begin(), "rtlab");
-    std::vector<char*> argv;
-    for (std::string& a : arguments) argv.push_back(a.data());
-    std::ostringstream captured;
-    std::streambuf* original = std::cout.rdbuf(captured.rdbuf());
-    int status = cli::run(static_cast<int>(argv.size()), argv.data());
-    std::cout.rdbuf(original);
-    return {status, captured.str()};
 }
 
 }  // namespace

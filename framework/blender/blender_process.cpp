@@ -35,18 +35,9 @@ std::string blenderProgram() {
 
 void runBlenderOrThrow(const std::vector<std::string>& arguments, TemporaryDirectory& work, const std::string& what,
                        double timeLimitSeconds) {
-    fs::path logPath = work.path() / "blender.log";
     std::vector<std::string> all{"-b", "--factory-startup", "--python-exit-code", "1"};
     all.insert(all.end(), arguments.begin(), arguments.end());
-    ExternalRun run = runExternal(blenderProgram(), all, work.path(), logPath, timeLimitSeconds, kInstallHint);
-    if (run.succeeded()) return;
-    work.keep();
-    if (run.timedOut)
-        throw Error("blender took longer than " + secondsText(timeLimitSeconds) + " s " + what +
-                    " (killed); log: " + logPath.string());
-    std::string reason = lastErrorLine(logPath);
-    throw Error("blender failed (exit " + std::to_string(run.exitStatus) + ") " + what +
-                (reason.empty() ? "" : ": " + reason) + "; log: " + logPath.string());
+    runExternalOrThrow(blenderProgram(), all, work, "blender.log", timeLimitSeconds, kInstallHint, what, lastErrorLine);
 }
 
 std::string blenderVersion() {

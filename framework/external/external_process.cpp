@@ -79,6 +79,21 @@ ExternalRun runExternal(const std::string& program, const std::vector<std::strin
     return run;
 }
 
+void runExternalOrThrow(const std::string& program, const std::vector<std::string>& arguments, TemporaryDirectory& work,
+                        const std::string& logName, double timeLimitSeconds, const std::string& hint,
+                        const std::string& what, const ErrorLineFinder& errorLine) {
+    fs::path logPath = work.path() / logName;
+    ExternalRun run = runExternal(program, arguments, work.path(), logPath, timeLimitSeconds, hint);
+    if (run.succeeded()) return;
+    work.keep();
+    if (run.timedOut)
+        throw Error(program + " took longer than " + secondsText(timeLimitSeconds) + " s " + what +
+                    " (killed); log: " + logPath.string());
+    std::string reason = errorLine(logPath);
+    throw Error(program + " failed (exit " + std::to_string(run.exitStatus) + ") " + what +
+                (reason.empty() ? "" : ": " + reason) + "; log: " + logPath.string());
+}
+
 std::string secondsText(double seconds) {
     std::ostringstream out;
     out << seconds;

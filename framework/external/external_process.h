@@ -4,7 +4,10 @@
 // with us.
 #pragma once
 
+#include "framework/external/temporary_directory.h"
+
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,6 +28,17 @@ struct ExternalRun {
 ExternalRun runExternal(const std::string& program, const std::vector<std::string>& arguments,
                         const std::filesystem::path& workDir, const std::filesystem::path& logPath,
                         double timeLimitSeconds, const std::string& hint);
+
+// The program's log, where it said what went wrong: one line of it, or "".
+using ErrorLineFinder = std::function<std::string(const std::filesystem::path& log)>;
+
+// runExternal in `work` with the log in work/<logName>. When the program exits non-zero or
+// overruns the limit, keeps the folder and throws rtlab::Error with one line: "PROGRAM failed
+// (exit N) WHAT: LINE; log: PATH" (LINE from errorLine) or "PROGRAM took longer than S s WHAT
+// (killed); log: PATH".
+void runExternalOrThrow(const std::string& program, const std::vector<std::string>& arguments, TemporaryDirectory& work,
+                        const std::string& logName, double timeLimitSeconds, const std::string& hint,
+                        const std::string& what, const ErrorLineFinder& errorLine);
 
 // A time limit as people write it: 600, 0.5.
 std::string secondsText(double seconds);

@@ -27,16 +27,8 @@ std::string firstErrorLine(const fs::path& logPath) {
 
 void runPovrayOrThrow(const std::vector<std::string>& arguments, TemporaryDirectory& work,
                       const std::string& what) {
-    fs::path logPath = work.path() / "povray.log";
-    ExternalRun run = runExternal("povray", arguments, work.path(), logPath, kPovrayTimeLimitSeconds, kInstallHint);
-    if (run.succeeded()) return;
-    work.keep();
-    if (run.timedOut)
-        throw Error("povray took longer than " + secondsText(kPovrayTimeLimitSeconds) + " s " + what +
-                    " (killed); log: " + logPath.string());
-    std::string reason = firstErrorLine(logPath);
-    throw Error("povray failed (exit " + std::to_string(run.exitStatus) + ") " + what +
-                (reason.empty() ? "" : ": " + reason) + "; log: " + logPath.string());
+    runExternalOrThrow("povray", arguments, work, "povray.log", kPovrayTimeLimitSeconds, kInstallHint, what,
+                       firstErrorLine);
 }
 
 std::string povrayVersion() {
