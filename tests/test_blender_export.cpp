@@ -39,6 +39,7 @@ TEST_CASE("emitter cut: k parts per edge, k^2 triangles with the winding and the
     std::array<Vec3, 3> v{Vec3(0, 1, 0), Vec3(1, 1, 0), Vec3(1, 1, 1)};
     CHECK(cutsPerEdge(v, 0.5) == 3);
     CHECK(cutsPerEdge(v, 1.5) == 1);
+    CHECK(cutsPerEdge({Vec3(0), Vec3(1e6f, 0, 0), Vec3(0, 1, 0)}, 0.5) == kMaxCutsPerEdge);
     TriangleCut cut = cutTriangle(v, {}, 3);
     REQUIRE(cut.indices.size() == 9);
     CHECK(cut.positions.size() == 10);  // (k + 1)(k + 2) / 2 lattice points

@@ -8,7 +8,9 @@ namespace rtlab {
 int cutsPerEdge(const std::array<Vec3, 3>& v, double maxEdge) {
     double longest = 0.0;
     for (int e = 0; e < 3; ++e) longest = std::max(longest, glm::length(DVec3(v[(e + 1) % 3]) - DVec3(v[e])));
-    return std::max(1, static_cast<int>(std::ceil(longest / maxEdge)));
+    double parts = std::ceil(longest / maxEdge);
+    if (!(parts >= 1.0)) return 1;  // NaN: the export refuses the non-finite vertex later
+    return static_cast<int>(std::min(parts, double(kMaxCutsPerEdge)));
 }
 
 TriangleCut cutTriangle(const std::array<Vec3, 3>& v, const std::vector<Vec3>& normals, int k) {

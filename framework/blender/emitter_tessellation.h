@@ -18,8 +18,12 @@ struct TriangleCut {
     std::vector<std::array<uint32_t, 3>> indices;  // into positions, same winding as the input
 };
 
+// At most this many parts per edge (65536 triangles for one): an emitter larger than
+// 256 x maxEdge keeps longer edges rather than filling the memory.
+inline constexpr int kMaxCutsPerEdge = 256;
+
 // The number of parts each edge is cut into so that no edge is longer than maxEdge:
-// ceil(longest edge / maxEdge), at least 1.
+// ceil(longest edge / maxEdge), at least 1, at most kMaxCutsPerEdge.
 int cutsPerEdge(const std::array<Vec3, 3>& vertices, double maxEdge);
 
 // Cuts the triangle p0 p1 p2 into k^2 triangles similar to it (k parts per edge): the points
