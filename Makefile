@@ -2,7 +2,8 @@
 # installs what is missing first (scripts/install-deps, Debian packages) and builds.
 #
 #   make grade [IMPL=assignments|solutions]   grade the student tree (or the reference)
-#   make test                                 the whole test suite through ctest
+#   make test                                 the whole test suite through ctest (installs Blender
+#                                             too: the radiometry references' tests render with it)
 #   make test-sanitize                        the suite under AddressSanitizer + UBSan
 #   make bench                                benchmarks against Embree (docs/performance.md)
 #   make gradescope                           the Gradescope autograder zip
@@ -16,10 +17,15 @@ IMPL ?= assignments
 JOBS ?= $(shell nproc)
 RTLAB := build/$(if $(filter solutions,$(IMPL)),rtlab-solution,rtlab)
 
-.PHONY: deps build models grade test test-sanitize test-batch-engines bench gradescope clean fuzz fuzz-ci test-tsan validate-gltf
+.PHONY: deps deps-blender build models grade test test-sanitize test-batch-engines bench gradescope clean fuzz fuzz-ci test-tsan validate-gltf
 
 deps:
 	@scripts/install-deps
+
+# Blender is large (about 340 MB) and only the instructor's references and the test suite use
+# it: make grade never installs it.
+deps-blender:
+	@scripts/install-deps --blender
 
 build: deps
 	@mkdir -p build && cmake --preset release > build/configure.log || (cat build/configure.log; exit 1)
@@ -36,7 +42,7 @@ grade: deps
 	@scripts/fetch-models build/models
 	@$(RTLAB) grade
 
-test: build models
+test: deps-blender build models
 	@ctest --preset release -j $(JOBS)
 
 test-sanitize: deps

@@ -36,7 +36,9 @@ struct Options {
     bool skipThroughput = false;
     bool skipConvergence = false;
     bool skipParameters = false;
+    bool skipEstimators = false;
     std::string convergenceScene = "bunny";
+    std::string estimatorScene = "scenes/radiometry/penumbra.gltf";
     std::string parameterScene = "engine";
 };
 
@@ -91,6 +93,15 @@ int runBench(const Options& options) {
             writeConvergenceSvg(outPath("convergence.svg"), result);
         }
     }
+    if (!options.skipEstimators) {
+        ConvergenceResult result = runConvergence(estimatorComparison(options.estimatorScene, options.quick));
+        std::cout << "\n## Estimators of direct light: error against samples and time\n";
+        writeConvergenceMarkdown(std::cout, result);
+        if (!options.outDir.empty()) {
+            writeConvergenceCsv(outPath("estimators.csv"), result);
+            writeConvergenceSvg(outPath("estimators.svg"), result);
+        }
+    }
     if (!options.skipParameters) {
         ParameterSweepOptions sweep;
         sweep.scene = options.quick ? "bunny" : options.parameterScene;
@@ -137,8 +148,11 @@ int main(int argc, char** argv) {
     app.add_flag("--no-throughput", options.skipThroughput, "Skip the throughput table");
     app.add_flag("--no-convergence", options.skipConvergence, "Skip image error against samples per pixel");
     app.add_flag("--no-parameters", options.skipParameters, "Skip the bucket count / leaf size sweep");
+    app.add_flag("--no-estimators", options.skipEstimators, "Skip the estimators of direct light (a6) against each other");
     app.add_option("--convergence-scene", options.convergenceScene, "Scene of the samples-per-pixel study");
     app.add_option("--parameter-scene", options.parameterScene, "Scene of the parameter sweep");
+    app.add_option("--estimator-scene", options.estimatorScene, "Scene of the estimator comparison (area lights)")
+        ->capture_default_str();
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -11,6 +11,7 @@ void addHitsCommand(CLI::App& app);
 void addSceneCommand(CLI::App& app);
 void addGradeCommand(CLI::App& app);
 void addExportPovCommand(CLI::App& app);
+void addExportBlenderCommand(CLI::App& app);
 void addRefsCommand(CLI::App& app);
 void addCompareCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);

@@ -2,9 +2,16 @@
 // [--max-share FRACTION]: two images through OpenImageIO (framework/render/image_compare.h).
 // Errors are printed in image units and in 16-bit codes; the exit status is 1 when a
 // tolerance given on the command line is exceeded.
+// rtlab compare --blender REF.exr --scene SCENE [--replicates K] [--seed S] [--light-sampling M]:
+// our renders of SCENE against a Blender Cycles reference, statistically
+// (framework/render/statistical_comparison.h); exit status 1 when they do not agree.
 #include "cli/commands.h"
+#include "cli/reference_renderer.h"
+#include "cli/statistical_report.h"
 #include "framework/core/error.h"
 #include "framework/render/image_compare.h"
+#include "framework/render/image_io.h"
+#include "framework/scene/gltf_loader.h"
 
 #include <iomanip>
 #include <iostream>
@@ -23,6 +30,12 @@ struct CompareOptions {
     std::optional<double> maxMeanCodes;
     std::optional<double> maxMaxCodes;
     std::optional<double> maxShare;
+    bool blender = false;
+    std::string scenePath;
+    std::string cameraName;
+    int replicates = 256;
+    uint64_t seed = 0;
+    std::string lightSampling = lightSamplingName(LightSampling::SolidAngle);
 };
 
 std::string percent(uint64_t count, uint64_t total) {
@@ -61,7 +74,30 @@ void printComparison(const CompareOptions& options, const ImageComparison& c) {
         << percent(c.pixelsOverThreshold, c.pixelCount) << ") above " << c.thresholdCodes << " codes\n";
 }
 
+void compareWithBlender(const CompareOptions& options) {
+    Scene scene = loadGltf(options.scenePath);
+    const Camera& camera = scene.camera(options.cameraName);
+    LightSampling sampling = parseLightSampling(options.lightSampling);
+    Image reference = readImage(options.imageA);
+    std::cout << "compare " << options.imageA << " (Blender) vs " << options.replicates << " renders of "
+              << options.scenePath << " (one sample per pixel, seeds " << options.seed << ".."
+              << options.seed + options.replicates - 1 << ", light sampling " << lightSamplingName(sampling) << "): "
+              << reference.width << "x" << reference.height << "\n";
+    StatisticalComparison c =
+        compareWithReferenceImage(scene, camera, reference, options.replicates, options.seed, sampling);
+    printRegionTable(std::cout, c);
+    std::cout << "  " << (c.passes() ? "agree: " : "DIFFER: ") << statisticalSummary(c) << "\n";
+    if (!c.passes())
+        throw Error("compare: " + options.scenePath + " does not agree with " + options.imageA + " (" +
+                    std::to_string(c.regionFailures()) + " regions, " + std::to_string(c.pixelFailures) +
+                    " pixel channels differ)");
+}
+
 void compare(const CompareOptions& options) {
+    if (options.blender) {
+        compareWithBlender(options);
+        return;
+    }
     ImageComparison comparison = compareImages(options.imageA, options.imageB, options.thresholdCodes);
     printComparison(options, comparison);
     if (!options.heatMapPath.empty()) {
@@ -91,10 +127,11 @@ void addCompareCommand(CLI::App& app) {
     auto options = std::make_shared<CompareOptions>();
     CLI::App* command = app.add_subcommand(
         "compare", "Compare two images (any format OpenImageIO reads): errors, PSNR, heat map (docs/verification.md)");
-    command->add_option("a", options->imageA, "First image (e.g. the render)")->required()->check(CLI::ExistingFile);
-    command->add_option("b", options->imageB, "Second image (e.g. the POV-Ray reference)")
+    command->add_option("a", options->imageA, "First image (e.g. the render; with --blender the Blender reference)")
         ->required()
         ->check(CLI::ExistingFile);
+    auto* b = command->add_option("b", options->imageB, "Second image (e.g. the POV-Ray reference)")
+                  ->check(CLI::ExistingFile);
     command->add_option("--diff", options->heatMapPath, "Write an 8-bit PNG heat map of the per-pixel error");
     command->add_option("--threshold", options->thresholdCodes,
                         "A pixel is 'over' when a channel differs by more than this many 16-bit codes")
@@ -107,7 +144,34 @@ void addCompareCommand(CLI::App& app) {
     command->add_option("--max-share", options->maxShare,
                         "Fail when the share of pixels over the threshold exceeds this fraction (0.001 = 0.1 %)")
         ->check(CLI::Range(0.0, 1.0));
-    command->callback([options] { compare(*options); });
+    auto* blender = command->add_flag(
+        "--blender", options->blender,
+        "A is a Blender Cycles reference (EXR): render --scene --replicates times and compare statistically "
+        "(docs/verification.md#statistical-comparison)");
+    blender->excludes(b);
+    command->add_option("--scene", options->scenePath, "With --blender: the scene the reference shows")
+        ->needs(blender)
+        ->check(CLI::ExistingFile);
+    command->add_option("--camera", options->cameraName, "With --blender: camera by name (default: the first)")
+        ->needs(blender);
+    command->add_option("--replicates", options->replicates, "With --blender: our renders, one sample per pixel each")
+        ->capture_default_str()
+        ->check(CLI::Range(2, 1 << 20))
+        ->needs(blender);
+    command->add_option("--seed", options->seed, "With --blender: the first replicate's seed (then +1, +2, ...)")
+        ->capture_default_str()
+        ->needs(blender);
+    command->add_option("--light-sampling", options->lightSampling,
+                        "With --blender: area | solid-angle | hemisphere | cosine")
+        ->capture_default_str()
+        ->needs(blender);
+    command->callback([options] {
+        if (options->blender && options->scenePath.empty())
+            throw CLI::ValidationError("--blender", "needs --scene SCENE, the scene the reference shows");
+        if (!options->blender && options->imageB.empty())
+            throw CLI::ValidationError("b", "two images are needed (or --blender REF.exr --scene SCENE)");
+        compare(*options);
+    });
 }
 
 }  // namespace rtlab::cli

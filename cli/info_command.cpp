@@ -1,10 +1,12 @@
 // rtlab info SCENE [--camera NAME]: what the loader made of a scene — primitives, bounds,
-// materials, lights, cameras and the glTF features it met.
+// materials, point lights, emitters (area and sphere lights), cameras and the glTF features it met.
 #include "cli/commands.h"
+#include "framework/scene/emitters.h"
 #include "framework/scene/gltf_loader.h"
 
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <numbers>
 #include <sstream>
@@ -25,6 +27,13 @@ std::string format(const V& v) {
 }
 
 std::string quoted(const std::string& name) { return name.empty() ? "(unnamed)" : "'" + name + "'"; }
+
+// The emitters of one material.
+struct EmitterGroup {
+    size_t triangles = 0, spheres = 0;
+    double area = 0.0;   // m^2
+    double power = 0.0;  // W
+};
 
 void printInfo(const InfoOptions& options) {
     Scene scene = loadGltf(options.scenePath);
@@ -48,6 +57,7 @@ void printInfo(const InfoOptions& options) {
         const Material& m = scene.materials[i];
         out << "  " << i << " " << quoted(m.name) << "  albedo " << format(m.albedo);
         if (m.emission != Vec3(0.0f)) out << "  emission " << format(m.emission) << " W/(sr m^2)";
+        if (m.doubleSided) out << "  double-sided";
         out << "\n";
     }
 
@@ -57,6 +67,20 @@ void printInfo(const InfoOptions& options) {
         out << "  " << i << " " << quoted(l.name) << "  point at " << format(l.position) << "  intensity "
             << format(l.intensity) << " W/sr\n";
     }
+
+    // Emissive triangles and spheres (framework/scene/emitters.h), summed per material.
+    std::vector<Emitter> emitters = findEmitters(scene);
+    std::map<uint32_t, EmitterGroup> groups;
+    for (const Emitter& e : emitters) {
+        EmitterGroup& group = groups[scene.materialOf(e.prim)];
+        ++(scene.isSphere(e.prim) ? group.spheres : group.triangles);
+        group.area += e.area;
+        group.power += e.power;
+    }
+    out << "emitters   " << emitters.size() << "\n";
+    for (const auto& [material, group] : groups)
+        out << "  material " << material << " " << quoted(scene.materials[material].name) << "  " << group.triangles
+            << " triangles, " << group.spheres << " spheres  area " << group.area << " m^2  power " << group.power << " W\n";
 
     out << "cameras    " << scene.cameras.size() << "\n";
     for (size_t i = 0; i < scene.cameras.size(); ++i) {

@@ -5,7 +5,7 @@
 // git repository with a single commit.
 #include "cli/commands.h"
 #include "framework/core/error.h"
-#include "framework/pov/povray_process.h"
+#include "framework/external/temporary_directory.h"
 #include "grader/process_runner.h"
 
 #include <filesystem>

@@ -4,6 +4,7 @@
 #include "cli/accelerator_options.h"
 #include "cli/commands.h"
 #include "cli/render_accelerator.h"
+#include "framework/render/light_sampling.h"
 #include "framework/core/error.h"
 #include "framework/render/image_io.h"
 #include "framework/render/renderer.h"
@@ -41,6 +42,9 @@ struct RenderOptions {
     float exposure = 0.0f;
     std::vector<std::string> aovNames;
     std::string aovDir;
+    int samplesPerPixel = 1;
+    uint64_t seed = 0;
+    std::string lightSampling = lightSamplingName(RenderSettings().lightSampling);
 };
 
 // A missing side follows from the other and the camera's aspect ratio.
@@ -67,6 +71,7 @@ void refuseToOverwriteScene(const std::string& path, const std::string& scenePat
 void render(RenderOptions options) {
     std::vector<Aov> aovs;
     for (const std::string& name : options.aovNames) aovs.push_back(parseAov(name));
+    LightSampling lightSampling = parseLightSampling(options.lightSampling);
     if (options.srgb8 && options.linear16) throw Error(options.outputPath + ": --srgb8 and --linear16 exclude each other");
     // A PNG is for looking at unless --linear16 asks for the references' format; .exr stays linear.
     std::string outputExtension = fs::path(options.outputPath).extension().string();
@@ -97,6 +102,9 @@ void render(RenderOptions options) {
     settings.height = options.height;
     settings.threads = options.threads;
     settings.aovs = aovs;
+    settings.samplesPerPixel = options.samplesPerPixel;
+    settings.seed = options.seed;
+    settings.lightSampling = lightSampling;
     RenderResult result = Renderer(scene, camera, *accelerator).render(settings);
 
     writeImage(options.outputPath, result.colour, writeOptions);
@@ -108,9 +116,9 @@ void render(RenderOptions options) {
     TraversalStats total = result.primary;
     total += result.shadow;
     double rays = static_cast<double>(std::max<uint64_t>(total.rays, 1));
-    std::printf("rendered %dx%d with %s on %d threads in %.3f s (build %.3f s): %.2f Mrays/s, "
+    std::printf("rendered %dx%d at %d spp with %s on %d threads in %.3f s (build %.3f s): %.2f Mrays/s, "
                 "%llu camera + %llu shadow rays, per ray %.1f node visits",
-                options.width, options.height, options.accelerator.name.c_str(),
+                options.width, options.height, options.samplesPerPixel, options.accelerator.name.c_str(),
                 resolveThreadCount(options.threads), result.seconds, buildSeconds,
                 total.rays / std::max(result.seconds, 1e-9) / 1e6,
                 static_cast<unsigned long long>(result.primary.rays),
@@ -155,6 +163,17 @@ void addRenderCommand(CLI::App& app) {
         ->allow_extra_args(false);  // one name per --aov, so a following SCENE is not taken
     command->add_option("--aov-dir", options->aovDir, "Directory for AOV files OUT.<aov>.<ext> (default: OUT's)")
         ->check(CLI::ExistingDirectory);
+    command->add_option("--spp", options->samplesPerPixel,
+                        "Samples per pixel: 1 = the pixel centre (as the POV-Ray references), N = N stratified camera rays")
+        ->check(CLI::Range(1, kMaxSamplesPerPixel))
+        ->capture_default_str();
+    command->add_option("--seed", options->seed, "Seed of the pixels' random streams (the same seed gives the same image)")
+        ->capture_default_str();
+    command->add_option("--light-sampling", options->lightSampling,
+                        "Emissive triangles and spheres: sample a light by its area or its solid angle, or a direction "
+                        "(uniform hemisphere or cosine-weighted)")
+        ->check(CLI::IsMember({"area", "solid-angle", "hemisphere", "cosine"}))
+        ->capture_default_str();
     command->callback([options, accel] {
         options->acceleratorGiven = accel->count() > 0;
         render(*options);

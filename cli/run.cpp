@@ -17,6 +17,7 @@ int run(int argc, char** argv) {
     addSceneCommand(app);
     addGradeCommand(app);
     addExportPovCommand(app);
+    addExportBlenderCommand(app);
     addRefsCommand(app);
     addCompareCommand(app);
     addBenchCommand(app);

@@ -1,5 +1,5 @@
 // libFuzzer target: ReferenceManifest::load, scenes/refs/manifest.json of the POV-Ray references.
-#include "framework/pov/reference_manifest.h"
+#include "framework/external/reference_manifest.h"
 #include "fuzz/input_file.h"
 #include "fuzz/one_line_error.h"
 

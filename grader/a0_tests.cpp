@@ -47,33 +47,12 @@ bool closeTo(double value, double expected, double relative) {
     return std::abs(value - expected) <= relative * std::max(1.0, std::abs(expected));
 }
 
-// The verdicts of a truth table, case by case: counts the passes and keeps one line per failure
-// (case id, ray, what went wrong); the first failure becomes the test's one-line reason.
-class CaseTally {
-public:
-    explicit CaseTally(TestResult& result) : result_(result) {}
-
-    // An empty problem means the case passed. The detail line names the shape too (what
-    // --verbose and the HTML report show, so a failing case can be reproduced from the line
-    // alone); the reason keeps the shorter id, ray and problem.
-    void record(const std::string& id, const std::string& shape, const Ray& ray, const std::string& problem) {
-        ++total_;
-        if (problem.empty()) {
-            ++passed_;
-            return;
-        }
-        result_.details.push_back(id + " " + shape + ", ray " + describeRay(ray) + ": " + problem);
-        if (firstFailure_.empty()) firstFailure_ = id + " " + describeRay(ray) + ": " + problem;
-    }
-
-    void finish() { setFromCounts(result_, passed_, total_, firstFailure_); }
-
-private:
-    TestResult& result_;
-    size_t passed_ = 0;
-    size_t total_ = 0;
-    std::string firstFailure_;
-};
+// One ray case of a truth table: the detail line names the shape too (what --verbose and the
+// HTML report show, so a failing case can be reproduced from the line alone); the reason keeps
+// the shorter id, ray and problem.
+void recordRayCase(CaseTally& tally, const std::string& id, const std::string& shape, const Ray& ray, const std::string& problem) {
+    tally.record(problem.empty(), id + " " + shape + ", ray " + describeRay(ray) + ": " + problem, id + " " + describeRay(ray) + ": " + problem);
+}
 
 // --- Truth tables ---------------------------------------------------------------------------
 
@@ -95,7 +74,7 @@ void scoreBoxTable(const std::vector<BoxCase>& cases, const PhaseOutcome& outcom
         std::string problem;
         if (hit != c.hit) problem = std::string("expected ") + (c.hit ? "hit" : "miss") + ", got " + (hit ? "hit" : "miss");
         else if (hit && !closeTo(enter, c.enter, 1e-5)) problem = "expected tEnter " + formatFloat(c.enter) + ", got " + formatFloat(enter);
-        tally.record(c.id, describeBox(c.box), c.ray, problem);
+        recordRayCase(tally, c.id, describeBox(c.box), c.ray, problem);
     }
     tally.finish();
 }
@@ -134,7 +113,7 @@ void scoreTriangleTable(const std::vector<TriangleCase>& cases, const PhaseOutco
         std::string shapes;
         for (size_t k = 0; k < c.triangles.size(); ++k)
             shapes += (k ? "; " : "") + std::string("triangle ") + std::to_string(k) + " " + describeTriangle(c.triangles[k]);
-        tally.record(c.id, shapes, c.ray, problem);
+        recordRayCase(tally, c.id, shapes, c.ray, problem);
     }
     tally.finish();
 }
@@ -157,7 +136,7 @@ void scoreSphereTable(const std::vector<SphereCase>& cases, const PhaseOutcome& 
         std::string problem;
         if (hit != c.hit) problem = std::string("expected ") + (c.hit ? "a hit at t=" + formatFloat(c.t) : "a miss") + ", got " + (hit ? "a hit at t=" + formatFloat(t) : "a miss");
         else if (hit && !closeTo(t, c.t, c.tolerance)) problem = "expected t=" + formatFloat(c.t) + ", got t=" + formatFloat(t);
-        tally.record(c.id, describeSphere(c.centre, c.radius), c.ray, problem);
+        recordRayCase(tally, c.id, describeSphere(c.centre, c.radius), c.ray, problem);
     }
     tally.finish();
 }

@@ -82,7 +82,7 @@ TestGroup resolutionGroup() {
         TestResult result = makeResult(kA3, "a3/cells/resolution");
         if (!failedPhaseResult(run.phases[0], result)) {
             ByteReader in(run.phases[0].data);
-            Tally tally(result);
+            CaseTally tally(result);
             for (const ResolutionCase& c : *cases) {
                 GridCell got = readCell(in);
                 tally.record(c.id, got == c.expected ? "" : "expected " + describeCell(c.expected) + ", got " + describeCell(got));
@@ -161,7 +161,7 @@ TestGroup cellGroup() {
     group.score = [points, flatPoints, ranges](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult cells = makeResult(kA3, "a3/cells/cell-of-point"), range = makeResult(kA3, "a3/cells/cell-range");
         if (!failedPhaseResult(run.phases[0], cells) && !failedPhaseResult(run.phases[1], cells)) {
-            Tally tally(cells);
+            CaseTally tally(cells);
             for (size_t k = 0; k < 2; ++k) {
                 ByteReader in(run.phases[k].data);
                 for (const PointCase& c : k == 0 ? *points : *flatPoints) {
@@ -174,7 +174,7 @@ TestGroup cellGroup() {
         }
         if (!failedPhaseResult(run.phases[2], range)) {
             ByteReader in(run.phases[2].data);
-            Tally tally(range);
+            CaseTally tally(range);
             for (const RangeCase& c : *ranges) {
                 GridCell lower = readCell(in), upper = readCell(in);
                 bool right = lower == c.lower && upper == c.upper;
@@ -290,7 +290,7 @@ TestGroup ddaGroup() {
         TestResult setup = makeResult(kA3, "a3/dda/setup"), step = makeResult(kA3, "a3/dda/step");
         if (!failedPhaseResult(run.phases[0], setup)) {
             ByteReader in(run.phases[0].data);
-            Tally tally(setup);
+            CaseTally tally(setup);
             for (const SetupCase& c : *setups)
                 tally.record(std::string(c.id) + " " + describeRay(c.call.ray) + " tEnter " + formatNumber(c.call.tEnter),
                              stateProblem(c.expected, in.get<DdaState>()));
@@ -298,7 +298,7 @@ TestGroup ddaGroup() {
         }
         if (!failedPhaseResult(run.phases[1], step)) {
             ByteReader in(run.phases[1].data);
-            Tally tally(step);
+            CaseTally tally(step);
             for (const StepCase& c : *steps) {
                 bool inside = in.get<uint8_t>() != 0;
                 std::string problem = stateProblem(c.expected, in.get<DdaState>());
@@ -378,7 +378,7 @@ TestGroup cellOrderGroup(uint64_t seed) {
     }
     group.score = [expected](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult result = makeResult(kA3, "a3/dda/cell-order");
-        Tally tally(result);
+        CaseTally tally(result);
         for (size_t f = 0; f < expected->size(); ++f) {
             if (failedPhaseResult(run.phases[f], result)) {
                 results.push_back(std::move(result));

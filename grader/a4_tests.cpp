@@ -81,7 +81,7 @@ TestGroup truthTable(const char* title, const char* test, const char* stub, cons
         TestResult result = makeResult(kA4, test);
         if (!failedPhaseResult(run.phases[0], result)) {
             ByteReader in(run.phases[0].data);
-            Tally tally(result);
+            CaseTally tally(result);
             for (const Case& c : *cases) {
                 Answer got = read(in);
                 tally.record(c.id, same(got, c.expected) ? "" : expectedGot(describe(c.expected), describe(got)));
@@ -259,7 +259,7 @@ TestGroup overlapGroup(uint64_t seed) {
         TestResult truth = makeResult(kA4, "a4/overlap/cases"), random = makeResult(kA4, "a4/overlap/property");
         if (!failedPhaseResult(run.phases[0], truth)) {
             ByteReader in(run.phases[0].data);
-            Tally tally(truth);
+            CaseTally tally(truth);
             for (const OverlapCase& c : *cases) {
                 bool got = readOverlap(in);
                 tally.record(c.id, got == c.expected ? "" : expectedGot(overlapText(c.expected), overlapText(got)));
@@ -484,7 +484,7 @@ TestGroup buildCaseGroup() {
     for (const BuildCase& c : *cases) group.phases.push_back(buildPhase(c.scene, c.options));
     group.score = [cases](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult result = makeResult(kA4, "a4/octree/build-cases");
-        Tally tally(result);
+        CaseTally tally(result);
         for (size_t i = 0; i < cases->size(); ++i) {
             const BuildCase& c = (*cases)[i];
             std::string problem;
@@ -521,7 +521,7 @@ TestGroup stressGroup() {
     }
     group.score = [scenes](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult result = makeResult(kA4, "a4/walk/stress");
-        Tally tally(result);
+        CaseTally tally(result);
         for (size_t s = 0; s < scenes->size(); ++s) {
             const OctreeStressScene& scene = (*scenes)[s];
             // The build, then the closest-hit and any-hit answers of the scene's rays.

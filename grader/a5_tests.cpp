@@ -62,7 +62,7 @@ template <typename Case, typename Judge>
 void scoreTable(const SandboxRun& run, size_t phase, const std::vector<Case>& cases, TestResult& result, Judge&& judge) {
     if (failedPhaseResult(run.phases[phase], result)) return;
     ByteReader in(run.phases[phase].data);
-    Tally tally(result);
+    CaseTally tally(result);
     for (const Case& c : cases) tally.record(c.id, judge(c, in));
     tally.finish();
 }
@@ -294,7 +294,7 @@ TestGroup walkGroup() {
         }
     group.score = [cases](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult result = makeResult(kA5, "a5/traversal/walk");
-        Tally tally(result);
+        CaseTally tally(result);
         size_t phase = 0;
         for (const WalkCase& c : *cases)
             for (bool occlusion : {false, true}) {
@@ -419,7 +419,7 @@ std::vector<TestGroup> a5Groups(GradingContext& context) {
     groups.push_back(childOrderGroup());
     groups.push_back(walkGroup());
     StructurePlugin kdtree = kdPlugin("kdtree", worker::KdBuildFunction::Sort, kStubBuild);
-    kdtree.cost = CostTest{"sah-cost", "SAH cost", 1e-12};
+    kdtree.cost = CostTest{"sah-cost", "SAH cost", 1e-12, "within 1e-12 relative"};
     for (TestGroup& g : structureGroups(kdtree, context)) groups.push_back(std::move(g));
     // The stadium: the depth limit of pbrt's rule against a small model in a large box.
     auto stadium = prepareScene(teapotInAStadium(context.modelsDir), context.seed);

@@ -39,6 +39,7 @@ const std::vector<Assignment>& assignments() {
         {"a3", "uniform grid and 3D-DDA", a3WithImages, {"a0_intersect", "a3_grid"}},
         {"a4", "octree: exact insertion and the parametric walk", a4WithImages, {"a0_intersect", "a4_octree"}},
         {"a5", "KD-tree: the SAH with events, the leaf rule, front-to-back traversal", a5WithImages, {"a0_intersect", "a5_kdtree"}},
+        {"a6", "radiometry and Monte Carlo direct lighting", a6Groups, {"a6_radiometry"}},
     };
     return list;
 }

@@ -14,6 +14,7 @@ std::vector<TestGroup> a2Groups(GradingContext& context);      // a2_tests.cpp
 std::vector<TestGroup> a3Groups(GradingContext& context);      // a3_tests.cpp
 std::vector<TestGroup> a4Groups(GradingContext& context);      // a4_tests.cpp
 std::vector<TestGroup> a5Groups(GradingContext& context);      // a5_tests.cpp
+std::vector<TestGroup> a6Groups(GradingContext& context);      // a6_tests.cpp
 // The image tests of an assignment whose structure renders the scenes (image_tests.cpp).
 struct ImageConfig {
     std::string assignment;   // "a1": tests named a1/images/<scene>

@@ -21,6 +21,7 @@ void writeScene(const Scene& scene, ByteWriter& out) {
         out.putString(m.name);
         out.put(m.albedo);
         out.put(m.emission);
+        out.put<uint8_t>(m.doubleSided);
     }
     out.put<uint64_t>(scene.lights.size());
     for (const PointLight& l : scene.lights) {
@@ -58,6 +59,7 @@ Scene readScene(ByteReader& in) {
         m.name = in.getString(kMaxName);
         m.albedo = in.get<Vec3>();
         m.emission = in.get<Vec3>();
+        m.doubleSided = in.get<uint8_t>() != 0;
     }
     for (uint64_t i = count(); i > 0; --i) {
         PointLight& l = scene.lights.emplace_back();

@@ -11,6 +11,16 @@ const char* testStatusName(TestStatus status) {
     return "?";
 }
 
+void CaseTally::record(bool passed, const std::string& detail, const std::string& reason) {
+    ++total_;
+    if (passed) {
+        ++passed_;
+        return;
+    }
+    result_.details.push_back(detail);
+    if (first_.empty()) first_ = reason;
+}
+
 void setFromCounts(TestResult& result, size_t passed, size_t total, const std::string& firstFailure) {
     result.fraction = total == 0 ? 0.0 : double(passed) / double(total);
     if (total > 0 && passed == total) {

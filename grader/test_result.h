@@ -42,4 +42,22 @@ inline constexpr const char* kHeatMapFileSuffix = "-heatmap.png";
 // Passed when every case passed; otherwise failed with partial credit passed/total.
 void setFromCounts(TestResult& result, size_t passed, size_t total, const std::string& firstFailure);
 
+// The verdicts of a truth table, case by case: counts the passes, keeps one detail line per
+// failing case ("id: problem"), and finish() sets the result from the counts, the first failure
+// as its reason.
+class CaseTally {
+public:
+    explicit CaseTally(TestResult& result) : result_(result) {}
+    // An empty problem means the case passed.
+    void record(const std::string& id, const std::string& problem) { record(problem.empty(), id + ": " + problem, id + ": " + problem); }
+    // A case whose detail line says more than its reason (e.g. the shape it was tested on).
+    void record(bool passed, const std::string& detail, const std::string& reason);
+    void finish() { setFromCounts(result_, passed_, total_, first_); }
+
+private:
+    TestResult& result_;
+    size_t passed_ = 0, total_ = 0;
+    std::string first_;
+};
+
 }  // namespace rtlab::grader

@@ -154,10 +154,12 @@ class GltfBuilder:
 
     # ---- scene objects --------------------------------------------------------------------
 
-    def add_material(self, name, albedo, emission=None, emissive_strength=None):
+    def add_material(self, name, albedo, emission=None, emissive_strength=None, double_sided=False):
         material = {"name": name,
                     "pbrMetallicRoughness": {"baseColorFactor": list(albedo) + [1.0],
                                              "metallicFactor": 0.0, "roughnessFactor": 1.0}}
+        if double_sided:
+            material["doubleSided"] = True
         if emission is not None:
             material["emissiveFactor"] = list(emission)
         if emissive_strength is not None:
@@ -190,12 +192,18 @@ class GltfBuilder:
             "yfov": yfov, "aspectRatio": aspect_ratio, "znear": 0.01}})
         return self.add_node(name, parent, camera=camera, **fields)
 
-    def add_point_light(self, name, candela, colour=(1.0, 1.0, 1.0), parent=None, **fields):
-        """A KHR_lights_punctual point light; intensity in candela (rtlab: W/sr = cd / 683)."""
+    def add_point_light(self, name, candela, colour=(1.0, 1.0, 1.0), parent=None, watts=None, **fields):
+        """A KHR_lights_punctual point light; intensity in candela (rtlab: W/sr = cd / 683). With
+        `watts`, its radiant flux goes into extras.rtlab.power (rtlab: W/sr = W / 4 pi) and the
+        intensity is set to the same W/sr in candela, so other tools agree."""
         self._use_extension("KHR_lights_punctual")
         lights = self.doc.setdefault("extensions", {}).setdefault(
             "KHR_lights_punctual", {"lights": []})["lights"]
-        lights.append({"name": name, "type": "point", "color": list(colour), "intensity": candela})
+        light = {"name": name, "type": "point", "color": list(colour), "intensity": candela}
+        if watts is not None:
+            light["intensity"] = watts / (4 * math.pi) * 683.0
+            light["extras"] = {"rtlab": {"power": watts}}
+        lights.append(light)
         return self.add_node(name, parent,
                              extensions={"KHR_lights_punctual": {"light": len(lights) - 1}}, **fields)
 

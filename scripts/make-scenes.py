@@ -9,6 +9,11 @@ radiance = albedo/pi * I * cos / d^2. The references are 16-bit PNGs, which clip
 the script bounds each scene's direct radiance from above (every light, no shadows) and refuses
 to write a scene that could exceed kMaxRadiance.
 
+The scenes of radiometry/ (a6) have area and sphere lights, which POV-Ray cannot render the
+way rtlab does: they have no POV-Ray reference and no such bound; their lights are emissive
+triangles and spheres (radiance = emissiveFactor * emissiveStrength) and point lights given in
+watts (extras.rtlab.power, I = W / 4 pi).
+
 Usage: scripts/make-scenes.py [OUTPUT_DIR]   (default: scenes/ next to this script)
 """
 
@@ -36,10 +41,12 @@ class SceneWriter:
         self.spheres = []    # (centre, radius, material)
         self.lights = []     # (position, rgb W/sr)
 
-    def material(self, name, albedo, emission=None):
+    def material(self, name, albedo, emission=None, strength=None, double_sided=False):
+        """A Lambert material; emission is emissiveFactor, times `strength` when given."""
         self.albedo.append(albedo)
-        self.emission.append(emission or (0.0, 0.0, 0.0))
-        return self.g.add_material(name, albedo, emission)
+        radiance = [c * (strength or 1.0) for c in (emission or (0.0, 0.0, 0.0))]
+        self.emission.append(radiance)
+        return self.g.add_material(name, albedo, emission, strength, double_sided)
 
     def mesh(self, name, positions, triangles, material, normals=None):
         positions = [f32v(p) for p in positions]
@@ -50,9 +57,11 @@ class SceneWriter:
         self.g.add_sphere(name, radius, material, translation=f32v(centre))
         self.spheres.append((f32v(centre), radius, material))
 
-    def light(self, name, position, candela, colour=(1.0, 1.0, 1.0)):
-        self.g.add_point_light(name, candela, colour, translation=f32v(position))
-        self.lights.append((f32v(position), [c * candela / LUMENS_PER_WATT for c in colour]))
+    def light(self, name, position, candela, colour=(1.0, 1.0, 1.0), watts=None):
+        """A point light of `candela`, or of radiant flux `watts` (then candela is ignored)."""
+        self.g.add_point_light(name, candela, colour, translation=f32v(position), watts=watts)
+        wattsPerSr = watts / (4 * math.pi) if watts is not None else candela / LUMENS_PER_WATT
+        self.lights.append((f32v(position), [c * wattsPerSr for c in colour]))
 
     def camera(self, position, target, yfov_degrees):
         """A camera at `position` looking at `target`, +Y up."""
@@ -95,6 +104,13 @@ class SceneWriter:
         self.g.write(path)
         print("%-22s %6d triangles %2d spheres %d lights  max radiance <= %.3f" % (
             os.path.basename(path), len(self.triangles), len(self.spheres), len(self.lights), bound))
+
+    def write_unbounded(self, path):
+        """For scenes with area lights, which have no 16-bit POV-Ray reference to clip."""
+        self.g.write(path)
+        emitters = sum(1 for *_, m in self.triangles + self.spheres if any(self.emission[m]))
+        print("%-22s %6d triangles %2d spheres %d lights  %d emitting primitives" % (
+            os.path.basename(path), len(self.triangles), len(self.spheres), len(self.lights), emitters))
 
 
 def sub(a, b):
@@ -182,13 +198,13 @@ def spheres():
     red = s.material("red", (0.8, 0.15, 0.1))
     blue = s.material("blue", (0.1, 0.25, 0.8))
     green = s.material("green", (0.15, 0.7, 0.2))
-    glow = s.material("glow", (0.0, 0.0, 0.0), (0.9, 0.75, 0.45))
+    yellow = s.material("yellow", (0.9, 0.75, 0.45))
     ground(s, 5, floor)
     s.sphere("big", [0, 1, 0], 1.0, white)
     s.sphere("red", [-1.75, 0.5, 0.75], 0.5, red)
     s.sphere("blue", [1.75, 0.75, 0.5], 0.75, blue)
     s.sphere("green", [0.5, 0.3125, 1.5], 0.3125, green)
-    s.sphere("glowing", [-0.625, 0.25, 1.875], 0.25, glow)
+    s.sphere("yellow", [-0.625, 0.25, 1.875], 0.25, yellow)
     s.light("key light", [3, 5, 4], 25000.0)
     s.camera([0, 2.5, 7], [0, 0.75, 0], 40)
     return s
@@ -235,13 +251,80 @@ def multi_light():
     return s
 
 
+# ---- radiometry (a6): area and sphere lights -------------------------------------------------
+
+
+def penumbra():
+    """A 1 m square light 2 m above the ground, facing down (L = 10), and a 0.5 m square occluder
+    halfway: from the ground its shadow on the light's plane is 1 m wide, so the umbra shrinks to
+    a point and the shadow is penumbra. The scene of the estimator comparison
+    (docs/a6-radiometry.md#run-time-against-error)."""
+    s = SceneWriter()
+    floor = s.material("floor", (0.8, 0.8, 0.8))
+    grey = s.material("occluder", (0.5, 0.5, 0.5))
+    light = s.material("light", (0.0, 0.0, 0.0), (1.0, 1.0, 1.0), 10.0)
+    ground(s, 4, floor)
+    add_quad(s, "occluder", [-0.15, 1.0, -0.35], [0.5, 0.0, 0.0], [0.0, 0.0, 0.5], grey)  # facing down
+    add_quad(s, "square light", [-0.5, 2.0, -0.5], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0], light)  # facing down
+    s.camera([2.2, 1.7, 2.8], [0.2, 0.1, 0.0], 40)  # below the light: it is out of the picture
+    return s
+
+
+def sphere_light():
+    """A sphere light (radius 0.4 m, L = 12) above a ball and a box: round soft shadows."""
+    s = SceneWriter()
+    floor = s.material("floor", (0.8, 0.8, 0.8))
+    white = s.material("white", (0.8, 0.8, 0.8))
+    blue = s.material("blue", (0.2, 0.35, 0.8))
+    light = s.material("light", (0.0, 0.0, 0.0), (1.0, 0.95, 0.85), 12.0)
+    ground(s, 4, floor)
+    s.sphere("ball", [0.6, 0.35, 0.4], 0.35, white)
+    add_box(s, "box", [-0.8, 0, -0.2], [0.5, 0.5, 0.5], 20, blue)
+    s.sphere("sphere light", [0, 1.8, 0], 0.4, light)
+    s.camera([0, 1.5, 4], [0, 0.5, 0], 45)
+    return s
+
+
+def mixed_lights():
+    """Point lights in watts and in candela and a double-sided area light, side by side."""
+    s = SceneWriter()
+    floor = s.material("floor", (0.75, 0.75, 0.75))
+    white = s.material("white", (0.8, 0.8, 0.8))
+    panel = s.material("panel", (0.0, 0.0, 0.0), (0.6, 0.8, 1.0), 8.0, double_sided=True)
+    ground(s, 4, floor)
+    s.sphere("ball", [-1.0, 0.6, 0.0], 0.6, white)
+    add_box(s, "box", [1.3, 0, -0.3], [0.6, 0.6, 0.6], -15, white)
+    # A vertical panel between them, turned 30 degrees towards the camera, emitting towards both.
+    add_quad(s, "panel light", [-0.1, 0.2, -0.55], [0.4, 0.0, 0.6928], [0.0, 0.6, 0.0], panel)
+    s.light("warm bulb", [-1.8, 2.2, 1.5], 0.0, (1.0, 0.8, 0.6), watts=150.0)
+    s.light("blue spot", [2.0, 3.0, 1.0], 2500.0, (0.6, 0.7, 1.0))
+    s.camera([0, 2, 5.5], [0, 0.5, 0], 40)
+    return s
+
+
+def closed_form():
+    """A 1 m square light 1 m above a large ground, facing down (L = 4): the irradiance on the
+    ground is Lambert's contour integral of the square, 0.7523 L under its centre. The camera
+    sees only ground and sky, never the light (tests/test_renderer.cpp checks the image)."""
+    s = SceneWriter()
+    floor = s.material("floor", (0.8, 0.8, 0.8))
+    light = s.material("light", (0.0, 0.0, 0.0), (1.0, 1.0, 1.0), 4.0)
+    ground(s, 10, floor)
+    add_quad(s, "square light", [-0.5, 1.0, -0.5], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0], light)  # facing down
+    s.camera([0, 0.45, 2.6], [0, 0, 0.1], 30)
+    return s
+
+
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                                              "..", "scenes")
-    os.makedirs(out, exist_ok=True)
+    os.makedirs(os.path.join(out, "radiometry"), exist_ok=True)
     for name, make in [("cornell-box", cornell_box), ("spheres", spheres), ("smooth-mesh", smooth_mesh),
                        ("light-behind", light_behind), ("multi-light", multi_light)]:
         make().write(os.path.join(out, name + ".gltf"))
+    for name, make in [("penumbra", penumbra), ("sphere-light", sphere_light), ("mixed-lights", mixed_lights),
+                       ("closed-form", closed_form)]:
+        make().write_unbounded(os.path.join(out, "radiometry", name + ".gltf"))
 
 
 if __name__ == "__main__":

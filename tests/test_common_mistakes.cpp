@@ -1,8 +1,9 @@
-// Every common mistake is a test (docs/a0-intersect.md, a1-bvh.md, a2-sah.md, a3-grid.md, "Common mistakes"):
-// each row of those tables is a mutant of the reference solution in tests/mutants/mutants.json,
-// graded by the real grader (rtlab-grader grade --submission), and the test the row names must
-// fail on it, for the reason the row gives. The recipes the pages spell out step by step are
-// graded the same way, transcribed literally, and must keep full marks.
+// Every common mistake is a test (docs/a0-intersect.md, a1-bvh.md, a2-sah.md, a3-grid.md,
+// a6-radiometry.md, "Common mistakes"): each row of those tables is a mutant of the reference
+// solution in tests/mutants/mutants.json, graded by the real grader (rtlab-grader grade
+// --submission), and the test the row names must fail on it, for the reason the row gives. The
+// recipes the pages spell out step by step are graded the same way, transcribed literally, and
+// must keep full marks.
 //
 // Mutants are made by text replacement in the solution files, so a solution edit that removes a
 // replaced text fails here loudly instead of silently grading the unmutated reference.

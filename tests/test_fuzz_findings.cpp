@@ -2,7 +2,7 @@
 // each must now end in one rtlab::Error, one line starting with the file's path and naming the
 // problem.
 #include "framework/core/error.h"
-#include "framework/pov/reference_manifest.h"
+#include "framework/external/reference_manifest.h"
 #include "framework/scene/gltf_loader.h"
 #include "grader/rubric.h"
 

@@ -2,6 +2,7 @@
 // the expected values below are worked out by hand from those numbers) and on the committed
 // scenes.
 #include "framework/core/error.h"
+#include "framework/scene/emitters.h"
 #include "framework/scene/gltf_loader.h"
 
 #include <doctest/doctest.h>
@@ -11,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <numbers>
 #include <string>
 
 using namespace rtlab;
@@ -53,10 +55,9 @@ std::array<Vec3, 3> triangleStartingAt(const Scene& scene, const Vec3& first, ui
     return {};
 }
 
-// Loading `name` fails with one rtlab::Error line that names the file and contains `problem`.
-void checkRejected(const std::string& name, const std::string& problem) {
-    CAPTURE(name);
-    std::string path = dataFile(name);
+// Loading `path` fails with one rtlab::Error line that names the file and contains `problem`.
+void checkRejectedPath(const std::string& path, const std::string& problem) {
+    CAPTURE(path);
     try {
         loadGltf(path);
         FAIL("loaded without an error");
@@ -68,6 +69,8 @@ void checkRejected(const std::string& name, const std::string& problem) {
         CHECK(message.find(problem) != std::string::npos);
     }
 }
+
+void checkRejected(const std::string& name, const std::string& problem) { checkRejectedPath(dataFile(name), problem); }
 
 void checkHierarchy(const Scene& scene) {
     REQUIRE(scene.triangleCount() == 4);
@@ -187,6 +190,10 @@ TEST_CASE("glTF loader: the committed scenes") {
         {"smooth-mesh.gltf", 2 + 2 * 528, 0, 1, true},
         {"light-behind.gltf", 2 + 2 + 12, 0, 1, false},
         {"multi-light.gltf", 2 + 12, 1, 3, false},
+        {"radiometry/penumbra.gltf", 2 + 2 + 2, 0, 0, false},
+        {"radiometry/sphere-light.gltf", 2 + 12, 2, 0, false},
+        {"radiometry/mixed-lights.gltf", 2 + 12 + 2, 1, 2, false},
+        {"radiometry/closed-form.gltf", 2 + 2, 0, 0, false},
     };
     for (const Expected& expected : scenes) {
         CAPTURE(expected.name);
@@ -204,17 +211,73 @@ TEST_CASE("glTF loader: the committed scenes") {
     checkVec(cornell.lights[0].position, {0.0f, 1.375f, 0.25f});
 }
 
+TEST_CASE("glTF loader: lights in watts, emissive materials, doubleSided (scenes/radiometry/mixed-lights.gltf)") {
+    Scene scene = loadGltf(sceneFile("radiometry/mixed-lights.gltf"));
+    // 150 W of colour (1, 0.8, 0.6) from extras.rtlab.power: I = 150 / 4 pi W/sr per unit colour.
+    const PointLight& bulb = scene.lights[0];
+    CHECK(bulb.name == "warm bulb");
+    checkVec(bulb.intensity, Vec3(1.0f, 0.8f, 0.6f) * float(150.0 / (4.0 * std::numbers::pi)));
+    CHECK(hasFeature(scene, "extras.rtlab.power"));
+    // The other light is in candela: 2500 cd -> 2500 / 683 W/sr.
+    checkVec(scene.lights[1].intensity, Vec3(0.6f, 0.7f, 1.0f) * (2500.0f / 683.0f));
+    // The panel: emissiveFactor (0.6, 0.8, 1) times emissiveStrength 8, both faces.
+    std::vector<Emitter> emitters = findEmitters(scene);
+    REQUIRE(emitters.size() == 2);
+    const Material& panel = scene.materials[scene.materialOf(emitters[0].prim)];
+    checkVec(panel.emission, {4.8f, 6.4f, 8.0f});
+    CHECK(panel.doubleSided);
+    CHECK(emitters[0].twoSided);
+    // Each triangle is half of the 0.8 m x 0.6 m panel; power = pi L A with L the mean of the
+    // channels, twice for two sides.
+    CHECK(emitters[0].area == doctest::Approx(0.24).epsilon(1e-4));
+    CHECK(emitters[0].power == doctest::Approx(2.0 * std::numbers::pi * 6.4 * emitters[0].area).epsilon(1e-6));
+}
+
+TEST_CASE("glTF loader: a sphere light and one-sided triangles (scenes/radiometry)") {
+    Scene spheres = loadGltf(sceneFile("radiometry/sphere-light.gltf"));
+    std::vector<Emitter> emitters = findEmitters(spheres);
+    REQUIRE(emitters.size() == 1);
+    CHECK(spheres.isSphere(emitters[0].prim));
+    CHECK(emitters[0].area == doctest::Approx(4.0 * std::numbers::pi * 0.16));
+    CHECK_FALSE(emitters[0].twoSided);
+
+    Scene square = loadGltf(sceneFile("radiometry/closed-form.gltf"));
+    REQUIRE(findEmitters(square).size() == 2);
+    for (const Emitter& e : findEmitters(square)) {
+        CHECK_FALSE(e.twoSided);
+        CHECK(e.area == doctest::Approx(0.5));
+        // The front face looks down: the light is seen from below, not from above.
+        auto v = square.triangleVertices(e.prim);
+        Vec3 front = glm::cross(v[1] - v[0], v[2] - v[0]);
+        checkVec(emittedRadiance(square, e.prim, glm::normalize(front), {0, -1, 0}), {4, 4, 4});
+        checkVec(emittedRadiance(square, e.prim, glm::normalize(front), {0, 1, 0}), {0, 0, 0});
+    }
+}
+
+TEST_CASE("glTF loader: a light's power must be a finite, non-negative number of watts") {
+    std::string path = std::string(RTLAB_BINARY_DIR) + "/tests/bad-power.gltf";
+    for (const char* power : {"-1", "\"bright\"", "[100]"}) {
+        CAPTURE(power);
+        std::ofstream(path) << R"({"asset": {"version": "2.0"}, "extensionsUsed": ["KHR_lights_punctual"],
+            "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "extras": {"rtlab": {"power": )" << power
+                            << R"(}}}]}}, "nodes": [{"extensions": {"KHR_lights_punctual": {"light": 0}}}]})";
+        checkRejectedPath(path, "extras.rtlab.power must be a finite number of watts");
+    }
+}
+
 TEST_CASE("glTF scenes: the committed files are exactly what scripts/make-scenes.py writes") {
     std::string out = std::string(RTLAB_BINARY_DIR) + "/tests/make-scenes-check";
     std::filesystem::remove_all(out);
     std::string command = "python3 '" + std::string(RTLAB_SOURCE_DIR) + "/scripts/make-scenes.py' '" + out + "' > /dev/null";
     REQUIRE(std::system(command.c_str()) == 0);
     int compared = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(out)) {
-        CAPTURE(entry.path().filename().string());
-        bool identical = fileBytes(entry.path().string()) == fileBytes(sceneFile(entry.path().filename().string()));
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(out)) {
+        if (!entry.is_regular_file()) continue;
+        std::string name = std::filesystem::relative(entry.path(), out).string();
+        CAPTURE(name);
+        bool identical = fileBytes(entry.path().string()) == fileBytes(sceneFile(name));
         CHECK(identical);  // if not: run scripts/make-scenes.py and commit its output
         ++compared;
     }
-    CHECK(compared == 5);
+    CHECK(compared == 9);
 }

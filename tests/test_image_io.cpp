@@ -47,7 +47,7 @@ TEST_CASE("16-bit PNG: code = floor(clip(v,0,1)*65535 + 0.5), read back unchange
     // exact (double) formula is unambiguous; plus clipping cases.
     Pcg32 random(7, 1);
     std::vector<float> values{0.0f, 1.0f, -0.25f, 1.5f, 1e-9f, 0.4f};
-    // 0.4 -> 26214 (docs/conventions.md#light-and-units)
+    // 0.4 -> 26214 (docs/conventions.md#lights-and-units)
     std::vector<uint16_t> expected{0, 65535, 0, 65535, 0, 26214};
     const double fractions[] = {0.0, 0.25, 0.49, 0.51, 0.75, 0.999};
     for (int i = 0; i < 600; ++i) {

@@ -1,37 +1,21 @@
 // `rtlab refs` on a scratch copy of a committed scene: renders once, skips what is up to date,
 // re-renders what changed, --check catches a modified reference, --hits agrees with the oracle.
 // Runs live POV-Ray.
-#include "cli/commands.h"
-#include "framework/pov/reference_manifest.h"
+#include "framework/external/reference_manifest.h"
 #include "framework/render/image_io.h"
+#include "tests/cli_runner.h"
 
 #include <doctest/doctest.h>
 
 #include <filesystem>
-#include <iostream>
-#include <sstream>
 #include <vector>
 
 using namespace rtlab;
+using test::CliResult;
+using test::runCli;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct CliResult {
-    int status = 0;
-    std::string out;
-};
-
-CliResult runCli(std::vector<std::string> arguments) {
-    arguments.insert(arguments.begin(), "rtlab");
-    std::vector<char*> argv;
-    for (std::string& a : arguments) argv.push_back(a.data());
-    std::ostringstream captured;
-    std::streambuf* original = std::cout.rdbuf(captured.rdbuf());
-    int status = cli::run(static_cast<int>(argv.size()), argv.data());
-    std::cout.rdbuf(original);
-    return {status, captured.str()};
-}
 
 fs::path scratchScenes() {
     fs::path root = fs::path(RTLAB_BINARY_DIR) / "test-output" / "refs";
@@ -62,7 +46,7 @@ TEST_CASE("rtlab refs: render, skip when up to date, re-render and --check when 
     CHECK(entry.scene == "scenes/light-behind.gltf");
     CHECK(entry.inputs.size() == 1);
     CHECK(entry.settings == "+W64 +H48 -A -D +FN16 File_Gamma=1.0 +WT1");
-    CHECK(entry.povray.rfind("POV-Ray 3.7", 0) == 0);
+    CHECK(entry.renderer.rfind("POV-Ray 3.7", 0) == 0);
     CHECK(readImage(image.string()).width == 64);
 
     CliResult second = runCli(with({"refs"}));

@@ -49,9 +49,9 @@ struct Bounds3f {
     bool operator==(const Bounds3f&) const = default;
 };
 
-// A primitive box a spatial structure (grid, octree) can place: finite and not empty.
+// A primitive box a spatial structure (grid, octree, KD-tree) can place: finite and not empty.
 // Degenerate input (NaN or infinite vertices) gives boxes that are neither, and such
-// primitives go into no cell or node.
+// primitives go into no cell, node or leaf.
 inline bool isPlaceable(const Bounds3f& box) {
     for (int a = 0; a < 3; ++a)
         if (!std::isfinite(box.lower[a]) || !std::isfinite(box.upper[a]) || box.lower[a] > box.upper[a]) return false;
@@ -61,15 +61,6 @@ inline bool isPlaceable(const Bounds3f& box) {
 inline Bounds3f unionOf(Bounds3f a, const Bounds3f& b) {
     a.extend(b);
     return a;
-}
-
-// A primitive box a spatial structure (grid, KD-tree) can place: finite and not empty. Degenerate
-// input (NaN or infinite vertices) gives boxes that are neither, and such primitives go into no
-// cell or leaf.
-inline bool isPlaceable(const Bounds3f& box) {
-    for (int a = 0; a < 3; ++a)
-        if (!std::isfinite(box.lower[a]) || !std::isfinite(box.upper[a]) || box.lower[a] > box.upper[a]) return false;
-    return true;
 }
 
 }  // namespace rtlab

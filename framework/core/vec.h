@@ -1,4 +1,5 @@
-// Vector types. Geometry is float32 (GLM's vec3); the oracle works in double (dvec3).
+// Vector types. Geometry is float32 (GLM's vec3); the oracle works in double (dvec3). Vec2
+// holds a pair of uniform random numbers for the samplers.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -7,6 +8,7 @@
 
 namespace rtlab {
 
+using Vec2 = glm::vec2;
 using Vec3 = glm::vec3;
 using DVec3 = glm::dvec3;
 

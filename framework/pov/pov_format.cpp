@@ -1,25 +1,16 @@
 #include "framework/pov/pov_format.h"
 
-#include "framework/core/error.h"
-
-#include <charconv>
-#include <cmath>
+#include "framework/core/shortest_decimal.h"
 
 namespace rtlab::pov {
 namespace {
 
-template <typename Float>
-std::string shortestRoundTrip(Float value) {
-    if (!std::isfinite(value)) throw Error("POV-Ray export: non-finite value " + std::to_string(value));
-    char buffer[32];
-    auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
-    return std::string(buffer, result.ptr);
-}
+constexpr const char* kWhat = "POV-Ray export";
 
 }  // namespace
 
-std::string number(double value) { return shortestRoundTrip(value); }
-std::string number32(float value) { return shortestRoundTrip(value); }
+std::string number(double value) { return shortestDecimal(value, kWhat); }
+std::string number32(float value) { return shortestDecimal32(value, kWhat); }
 
 // Appended piece by piece ("<" + std::string trips GCC 12's -Wrestrict false positive).
 template <typename V, typename Format>

@@ -1,38 +1,22 @@
 // Running the `povray` executable headless, from a working folder it may write in (Debian's
-// povray.conf lets POV-Ray write only in its current directory and the system temp folder).
+// povray.conf lets POV-Ray write only in its current directory and the system temp folder),
+// under a time limit (framework/external/external_process.h).
 #pragma once
 
-#include <filesystem>
+#include "framework/external/temporary_directory.h"
+
 #include <string>
 #include <vector>
 
 namespace rtlab {
 
-// A fresh folder under the system temp directory, removed with everything in it on
-// destruction unless keep() was called (to leave a failed run's log for the user).
-class TemporaryDirectory {
-public:
-    explicit TemporaryDirectory(const std::string& prefix);
-    ~TemporaryDirectory();
-    TemporaryDirectory(const TemporaryDirectory&) = delete;
-    TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
+// The longest a povray run may take: a 320x240 reference takes about a second and 10^5
+// trace() rays about 3 s, so this only ends a POV-Ray that hangs.
+inline constexpr double kPovrayTimeLimitSeconds = 600.0;
 
-    const std::filesystem::path& path() const { return path_; }
-    void keep() { keep_ = true; }
-
-private:
-    std::filesystem::path path_;
-    bool keep_ = false;
-};
-
-// Runs `povray arguments...` in workDir with stdin from /dev/null and stdout + stderr into
-// logPath; returns POV-Ray's exit status. Throws rtlab::Error when povray cannot be started.
-int runPovray(const std::vector<std::string>& arguments, const std::filesystem::path& workDir,
-              const std::filesystem::path& logPath);
-
-// Runs povray in `work` with its log in work/povray.log. When it exits non-zero, keeps the
-// folder and throws rtlab::Error with one line: `what` was being done, POV-Ray's first error
-// line and the log path.
+// Runs povray in `work` with its log in work/povray.log. When it exits non-zero or overruns
+// the time limit, keeps the folder and throws rtlab::Error with one line: `what` was being
+// done, POV-Ray's first error line and the log path.
 void runPovrayOrThrow(const std::vector<std::string>& arguments, TemporaryDirectory& work,
                       const std::string& what);
 

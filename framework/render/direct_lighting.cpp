@@ -1,6 +1,7 @@
 #include "framework/render/direct_lighting.h"
 
 #include "framework/render/spawn_ray.h"
+#include "framework/scene/emitters.h"
 
 #include <cmath>
 #include <numbers>
@@ -10,7 +11,7 @@ namespace rtlab {
 Vec3 directLighting(const Scene& scene, const Accelerator& accelerator, const SurfaceHit& surface,
                     const Vec3& rayDirection, TraversalStats& shadowStats) {
     const Material& material = scene.materials[surface.material];
-    Vec3 radiance = material.emission;
+    Vec3 radiance = emittedRadiance(scene, surface.prim, surface.geometricNormal, -rayDirection);
     if (material.albedo == Vec3(0.0f)) return radiance;
 
     Vec3 brdf = material.albedo * std::numbers::inv_pi_v<float>;

@@ -1,9 +1,13 @@
 #include "framework/render/renderer.h"
 
 #include "framework/core/error.h"
+#include "framework/core/pcg32.h"
+#include "framework/render/accelerator_rays.h"
+#include "framework/render/area_lights.h"
 #include "framework/render/direct_lighting.h"
 #include "framework/render/progress_bar.h"
 #include "framework/render/tiles.h"
+#include "framework/sampling/stratified.h"
 
 #include <algorithm>
 #include <chrono>
@@ -36,6 +40,24 @@ struct TileStats {
     TraversalStats shadow;
 };
 
+// The stratified samples of one pixel (docs/conventions.md#sampling): film positions, then
+// light picks and light points when the scene has area lights, all from the pixel's own PCG32
+// stream (sequence = pixel index), so a pixel's samples do not depend on who renders it.
+struct PixelSamples {
+    std::vector<Vec2> film, light;
+    std::vector<float> pick;
+
+    PixelSamples(int count, bool areaLights)
+        : film(static_cast<size_t>(count)), light(areaLights ? count : 0), pick(areaLights ? count : 0) {}
+
+    void generate(uint64_t seed, uint64_t pixel) {
+        Pcg32 rng(seed, pixel);
+        stratified2D(rng, film);
+        stratified1D(rng, pick);
+        stratified2D(rng, light);
+    }
+};
+
 }  // namespace
 
 RenderResult Renderer::render(const RenderSettings& settings) const {
@@ -43,6 +65,11 @@ RenderResult Renderer::render(const RenderSettings& settings) const {
         settings.height > kMaxImageSide)
         throw Error("image size " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
                     " is out of range (1.." + std::to_string(kMaxImageSide) + " per side)");
+    const int spp = settings.samplesPerPixel;
+    if (spp < 1 || spp > kMaxSamplesPerPixel)
+        throw Error(std::to_string(spp) + " samples per pixel is out of range (1.." + std::to_string(kMaxSamplesPerPixel) + ")");
+    const AreaLights areaLights(scene_);
+    const float reach = sceneReach(scene_);
 
     auto start = std::chrono::steady_clock::now();
     RenderResult result;
@@ -57,23 +84,42 @@ RenderResult Renderer::render(const RenderSettings& settings) const {
     parallelFor(tiles.size(), settings.threads, [&](size_t tileIndex) {
         const Tile& tile = tiles[tileIndex];
         TileStats& stats = tileStats[tileIndex];
+        PixelSamples samples(spp, !areaLights.empty());
         for (int y = tile.y0; y < tile.y1; ++y) {
             for (int x = tile.x0; x < tile.x1; ++x) {
                 size_t pixel = static_cast<size_t>(y) * settings.width + x;
-                Ray ray = camera_.generateRay(x, y, settings.width, settings.height);
-                TraversalStats rayStats;
-                Hit hit = accelerator_.intersect(ray, rayStats);
-                stats.primary += rayStats;
-                if (!aovs.cost.empty()) aovs.cost[pixel] = static_cast<uint32_t>(rayStats.steps() + rayStats.primitiveTests);
-                if (!aovs.steps.empty()) aovs.steps[pixel] = static_cast<uint32_t>(rayStats.steps());
-                if (!aovs.depth.pixels.empty()) aovs.depth.at(x, y, 0) = hit.found() ? hit.t : kInfinity;
-                if (!hit.found()) continue;  // misses stay black
+                samples.generate(settings.seed, pixel);
+                Vec3 sum(0.0f);
+                for (int s = 0; s < spp; ++s) {
+                    // One sample keeps POV-Ray's ray through the pixel centre.
+                    Ray ray = spp == 1 ? camera_.generateRay(x, y, settings.width, settings.height)
+                                       : camera_.generateRayThrough(x + samples.film[s].x, y + samples.film[s].y,
+                                                                    settings.width, settings.height);
+                    TraversalStats rayStats;
+                    Hit hit = accelerator_.intersect(ray, rayStats);
+                    stats.primary += rayStats;
+                    if (s == 0) {
+                        if (!aovs.cost.empty()) aovs.cost[pixel] = static_cast<uint32_t>(rayStats.steps() + rayStats.primitiveTests);
+                        if (!aovs.steps.empty()) aovs.steps[pixel] = static_cast<uint32_t>(rayStats.steps());
+                        if (!aovs.depth.pixels.empty()) aovs.depth.at(x, y, 0) = hit.found() ? hit.t : kInfinity;
+                    }
+                    if (!hit.found()) continue;  // misses are black
 
-                SurfaceHit surface = scene_.surfaceAt(ray, hit);
-                result.colour.setRgb(x, y, directLighting(scene_, accelerator_, surface, ray.direction, stats.shadow));
-                if (!aovs.primitive.empty()) aovs.primitive[pixel] = hit.prim;
-                if (!aovs.normal.pixels.empty())
-                    aovs.normal.setRgb(x, y, 0.5f * faceViewer(surface.shadingNormal, ray.direction) + 0.5f);
+                    SurfaceHit surface = scene_.surfaceAt(ray, hit);
+                    Vec3 normal = faceViewer(surface.shadingNormal, ray.direction);
+                    Vec3 radiance = directLighting(scene_, accelerator_, surface, ray.direction, stats.shadow);
+                    if (!areaLights.empty()) {
+                        ShadingPoint point{surface.point, normal, scene_.materials[surface.material].albedo};
+                        AcceleratorRays rays(scene_, accelerator_, surface, reach, stats.shadow);
+                        radiance += areaLights.estimate(point, rays, settings.lightSampling, samples.pick[s], samples.light[s]);
+                    }
+                    sum += radiance;
+                    if (s == 0) {
+                        if (!aovs.primitive.empty()) aovs.primitive[pixel] = hit.prim;
+                        if (!aovs.normal.pixels.empty()) aovs.normal.setRgb(x, y, 0.5f * normal + 0.5f);
+                    }
+                }
+                result.colour.setRgb(x, y, sum / static_cast<float>(spp));
             }
         }
         progress.advance();

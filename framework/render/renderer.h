@@ -1,11 +1,14 @@
-// The renderer (docs/rendering.md): one camera ray through each pixel centre, direct lighting
-// from point lights with hard shadows at the first hit, black where the ray misses. Tiles are
-// rendered on several threads; the image is bit-identical for every thread count.
+// The renderer (docs/rendering.md): at one sample per pixel, one camera ray through each pixel
+// centre; at N, N stratified camera rays per pixel. At the first hit: the surface's emission,
+// point lights with hard shadows, and one sample of the area and sphere lights (soft shadows);
+// black where the ray misses. Tiles are rendered on several threads; every pixel draws its
+// samples from its own random stream, so the image is bit-identical for every thread count.
 #pragma once
 
 #include "framework/accel/accelerator.h"
 #include "framework/render/aov.h"
 #include "framework/render/image.h"
+#include "framework/render/light_sampling.h"
 #include "framework/scene/scene.h"
 
 #include <vector>
@@ -16,15 +19,20 @@ struct RenderSettings {
     int width = 640;
     int height = 480;
     int threads = 0;        // 0 = one per hardware thread
-    std::vector<Aov> aovs;  // the AOV buffers to fill
+    std::vector<Aov> aovs;  // the AOV buffers to fill (from each pixel's first sample)
     bool progress = true;   // draw a progress bar when stderr is a terminal
+    int samplesPerPixel = 1;  // 1 = the pixel centre, as POV-Ray; N = N stratified film positions
+    uint64_t seed = 0;        // the random streams of the pixels (docs/conventions.md#sampling)
+    LightSampling lightSampling = LightSampling::SolidAngle;  // for emissive triangles and spheres
 };
+
+inline constexpr int kMaxSamplesPerPixel = 1 << 16;
 
 struct RenderResult {
     Image colour;            // linear RGB radiance
     AovBuffers aovs;         // only the requested buffers are filled
     TraversalStats primary;  // camera rays
-    TraversalStats shadow;   // shadow rays
+    TraversalStats shadow;   // shadow rays, and rays that look for emitters
     double seconds = 0.0;    // wall time of rendering (the accelerator was built before)
 };
 
@@ -34,8 +42,8 @@ public:
     Renderer(const Scene& scene, const Camera& camera, const Accelerator& accelerator)
         : scene_(scene), camera_(camera), accelerator_(accelerator) {}
 
-    // Throws rtlab::Error for an image size out of range, and whatever the accelerator throws
-    // (rtlab::NotImplemented from a stub).
+    // Throws rtlab::Error for an image size or sample count out of range, and whatever the
+    // accelerator or an a6 estimator throws (rtlab::NotImplemented from a stub).
     RenderResult render(const RenderSettings& settings) const;
 
 private:

@@ -5,9 +5,9 @@
 // What is read (docs/scenes.md): the default scene (else scene 0, else every root node), the
 // node hierarchy (matrix or T*R*S, composed parent*child in double precision), TRIANGLES
 // primitives (indexed with u8/u16/u32 or not), NORMAL, perspective cameras, KHR_lights_punctual
-// point lights, baseColorFactor, emissiveFactor with KHR_materials_emissive_strength, and
-// analytic spheres from extras.rtlab.sphere. Textures are never used, so images are never
-// decoded.
+// point lights (in candela, or in watts from extras.rtlab.power), baseColorFactor,
+// emissiveFactor with KHR_materials_emissive_strength, doubleSided, and analytic spheres from
+// extras.rtlab.sphere. Textures are never used, so images are never decoded.
 //
 // Limits on input: before tinygltf sees a document, its size, its JSON nesting and every
 // buffer's byteLength are checked against what the file can hold, and before anything is
@@ -42,6 +42,7 @@ namespace {
 constexpr const char* kLightsExtension = "KHR_lights_punctual";
 constexpr const char* kEmissiveStrengthExtension = "KHR_materials_emissive_strength";
 constexpr const char* kSphereFeature = "extras.rtlab.sphere";
+constexpr const char* kPowerFeature = "extras.rtlab.power";
 constexpr const char* kNormalsFeature = "vertex normals (smooth shading)";
 
 // Relative tolerance for "this transform scales uniformly" (spheres stay spheres).
@@ -353,6 +354,7 @@ private:
                 note(kEmissiveStrengthExtension);
             }
             material.emission = Vec3(checkedColour(emission, what));
+            material.doubleSided = source.doubleSided;
             scene_.materials.push_back(material);
         }
     }
@@ -666,9 +668,18 @@ private:
         PointLight light;
         light.name = source.name;
         light.position = Vec3(DVec3(toWorld[3]));
-        // glTF gives candela; the renderer works in W/sr (docs/conventions.md).
-        light.intensity = Vec3(checkedColour(colour, lightWhat) * source.intensity /
-                               static_cast<double>(kLumensPerWatt));
+        // glTF gives candela; a radiant flux in W may be given instead (extras.rtlab.power), for
+        // an isotropic source I = Phi / 4 pi. The renderer works in W/sr (docs/conventions.md).
+        if (source.extras.Has("rtlab") && source.extras.Get("rtlab").Has("power")) {
+            const tinygltf::Value& power = source.extras.Get("rtlab").Get("power");
+            if (!power.IsNumber() || !std::isfinite(power.GetNumberAsDouble()) || power.GetNumberAsDouble() < 0.0)
+                fail(lightWhat + ": " + kPowerFeature + " must be a finite number of watts, not negative");
+            light.intensity = Vec3(checkedColour(colour, lightWhat) * (power.GetNumberAsDouble() / (4.0 * std::numbers::pi)));
+            note(kPowerFeature);
+        } else {
+            light.intensity = Vec3(checkedColour(colour, lightWhat) * source.intensity /
+                                   static_cast<double>(kLumensPerWatt));
+        }
         scene_.lights.push_back(light);
         note(kLightsExtension);
     }

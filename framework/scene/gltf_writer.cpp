@@ -83,6 +83,7 @@ private:
                     useExtension("KHR_materials_emissive_strength");
                 }
             }
+            material.doubleSided = source.doubleSided;
             model_.materials.push_back(material);
         }
     }

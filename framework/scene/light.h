@@ -1,5 +1,7 @@
 // A point light. glTF gives intensity in candela; the renderer works in radiometric units,
-// I [W/sr] = cd / 683, as Blender's glTF importer does (docs/conventions.md).
+// I [W/sr] = cd / 683, as Blender's glTF importer does, or I = Phi / 4 pi for a light given by
+// its power Phi in W (extras.rtlab.power; docs/conventions.md#lights-and-units). Lights with an
+// area are emissive triangles and spheres (emitters.h).
 #pragma once
 
 #include "framework/core/vec.h"

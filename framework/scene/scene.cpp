@@ -32,6 +32,7 @@ uint32_t Scene::materialOf(uint32_t prim) const {
 SurfaceHit Scene::surfaceAt(const Ray& ray, const Hit& hit) const {
     SurfaceHit s;
     s.material = materialOf(hit.prim);
+    s.prim = hit.prim;
     if (isSphere(hit.prim)) {
         const Sphere& sp = sphere(hit.prim);
         Vec3 p = ray.at(hit.t);

@@ -40,6 +40,7 @@ struct SurfaceHit {
     Vec3 shadingNormal;    // unit; interpolated when the mesh has normals
     Vec3 pointError;       // conservative bound on the rounding error of point (for offsets)
     uint32_t material = 0;
+    uint32_t prim = kNoHit;  // the primitive hit
 };
 
 struct Scene {

@@ -41,7 +41,7 @@ one_line_naming() {
     fi
 }
 
-for command in "" info render hits scene grade release; do
+for command in "" info render hits scene grade release export-blender compare refs; do
     expect 0 "rtlab $command --help" -- "$solution" $command --help
 done
 expect 2 "no subcommand" -- "$solution"
@@ -56,6 +56,12 @@ printf '{"asset": {"version": "2.0"}, "nodes": [' > "$work/broken.gltf"
 expect 1 "malformed glTF" -- "$solution" render "$work/broken.gltf" -o "$work/out.png"
 one_line_naming "broken.gltf" "malformed glTF"
 [ -e "$work/out.png" ] && { echo "FAIL: an output was written for a broken scene"; failures=$((failures + 1)); }
+expect 1 "malformed glTF to Blender" -- "$solution" export-blender "$work/broken.gltf" -o "$work/out.py"
+one_line_naming "broken.gltf" "malformed glTF to Blender"
+[ -e "$work/out.py" ] && { echo "FAIL: a Blender script was written for a broken scene"; failures=$((failures + 1)); }
+expect 2 "compare --blender without the scene" -- "$solution" compare --blender "$work/broken.gltf"
+expect 2 "compare with one image" -- "$solution" compare "$work/broken.gltf"
+expect 2 "refs --hits with --blender" -- "$solution" refs --blender --hits
 
 expect 1 "unknown accelerator" -- "$solution" render "$scene" -o "$work/x.png" --accel bvh-magic
 one_line_naming "bvh-magic" "unknown accelerator"

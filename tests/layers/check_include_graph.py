@@ -4,7 +4,7 @@ know each other do not.
 
 Every #include "a/b/c.h" in a tracked .cpp or .h file is an edge from the including file's
 layer to the included file's layer. Layers are framework/<part> (core, interface, scene, accel,
-oracle, render, pov), grader (with grader/worker), cli, fast, bench, fuzz, assignments,
+oracle, sampling, render, external, pov, blender), grader (with grader/worker), cli, fast, bench, fuzz, assignments,
 solutions and tests. ALLOWED lists, for each layer, the layers it may include besides itself;
 any other edge is printed as FILE:LINE and fails the test, and so does a file in a layer the
 table does not know (a new folder must say where it sits).
@@ -16,7 +16,8 @@ import re
 import subprocess
 import sys
 
-FRAMEWORK = {"framework/" + p for p in ("core", "interface", "scene", "accel", "oracle", "render", "pov")}
+FRAMEWORK = {"framework/" + p for p in ("core", "interface", "scene", "accel", "oracle", "sampling", "render", "external",
+                                        "pov", "blender")}
 
 ALLOWED = {
     "framework/core": set(),
@@ -25,8 +26,15 @@ ALLOWED = {
     "framework/scene": {"framework/core"},
     "framework/accel": {"framework/core", "framework/interface", "framework/scene"},
     "framework/oracle": {"framework/core", "framework/scene"},
-    "framework/render": {"framework/core", "framework/interface", "framework/scene", "framework/accel", "framework/oracle"},
-    "framework/pov": {"framework/core", "framework/scene", "framework/oracle", "framework/render"},
+    # Random numbers and stratification for the renderer, the bench and the grader.
+    "framework/sampling": {"framework/core"},
+    "framework/render": {"framework/core", "framework/interface", "framework/scene", "framework/accel", "framework/oracle",
+                         "framework/sampling"},
+    # Running the reference renderers (a time limit, a scratch folder) and the manifest of their inputs.
+    "framework/external": {"framework/core"},
+    "framework/pov": {"framework/core", "framework/scene", "framework/oracle", "framework/render", "framework/external"},
+    # Beside pov/: the Blender Cycles exporter and references of the radiometry scenes.
+    "framework/blender": {"framework/core", "framework/scene", "framework/external"},
     # Student code and the reference solutions: only the contract.
     "assignments": {"framework/core", "framework/interface"},
     "solutions": {"framework/core", "framework/interface"},

@@ -1,4 +1,4 @@
-#include "framework/pov/reference_manifest.h"
+#include "framework/external/reference_manifest.h"
 
 #include "framework/core/error.h"
 #include "framework/core/sha256.h"
@@ -15,11 +15,12 @@ using nlohmann::json;
 
 namespace {
 
-constexpr int kManifestFormat = 1;
+// Format 2 names the renderer's version "renderer"; format 1 (POV-Ray only) called it "povray".
+constexpr int kManifestFormat = 2;
 
 json toJson(const ReferenceEntry& e) {
     return json{{"scene", e.scene},        {"inputs", e.inputs},     {"camera", e.camera},
-                {"exporter", e.exporter},  {"povray", e.povray},     {"width", e.width},
+                {"exporter", e.exporter},  {"renderer", e.renderer},     {"width", e.width},
                 {"height", e.height},      {"settings", e.settings}, {"image", e.image},
                 {"image_sha256", e.imageSha256}};
 }
@@ -34,7 +35,7 @@ int wholeNumber(const json& value, const std::string& what) {
     return static_cast<int>(value.get<int64_t>());
 }
 
-ReferenceEntry fromJson(const std::string& path, const std::string& name, const json& j) {
+ReferenceEntry fromJson(const std::string& path, int format, const std::string& name, const json& j) {
     // The name comes from the file: quoted and escaped as JSON, so the message stays one line.
     std::string where = path + ": reference " + json(name).dump(-1, ' ', false, json::error_handler_t::replace) + ": ";
     ReferenceEntry e;
@@ -43,7 +44,7 @@ ReferenceEntry fromJson(const std::string& path, const std::string& name, const 
     e.inputs = j.at("inputs").get<std::map<std::string, std::string>>();
     e.camera = j.at("camera").get<std::string>();
     e.exporter = j.at("exporter").get<std::string>();
-    e.povray = j.at("povray").get<std::string>();
+    e.renderer = j.at(format == 1 ? "povray" : "renderer").get<std::string>();
     e.width = wholeNumber(j.at("width"), where + "width");
     e.height = wholeNumber(j.at("height"), where + "height");
     e.settings = j.at("settings").get<std::string>();
@@ -64,11 +65,13 @@ ReferenceManifest ReferenceManifest::load(const fs::path& path) {
     std::ifstream in(path);
     try {
         json j = json::parse(in);
-        if (wholeNumber(j.at("format"), path.string() + ": manifest format") != kManifestFormat)
-            throw Error(path.string() + ": manifest format " + j.at("format").dump() + " is not " +
+        int format = wholeNumber(j.at("format"), path.string() + ": manifest format");
+        if (format != 1 && format != kManifestFormat)
+            throw Error(path.string() + ": manifest format " + j.at("format").dump() + " is not 1 or " +
                         std::to_string(kManifestFormat));
+        if (j.contains("about") && j["about"].is_string()) manifest.about = j["about"].get<std::string>();
         for (const auto& [name, entry] : j.at("references").items())
-            manifest.entries[name] = fromJson(path.string(), name, entry);
+            manifest.entries[name] = fromJson(path.string(), format, name, entry);
     } catch (const json::exception& e) {
         throw Error(path.string() + ": malformed reference manifest: " + e.what());
     }
@@ -78,9 +81,7 @@ ReferenceManifest ReferenceManifest::load(const fs::path& path) {
 void ReferenceManifest::save(const fs::path& path) const {
     json references = json::object();
     for (const auto& [name, entry] : entries) references[name] = toJson(entry);
-    json j{{"format", kManifestFormat},
-           {"about", "POV-Ray references made by `rtlab refs` (docs/verification.md); do not edit"},
-           {"references", references}};
+    json j{{"format", kManifestFormat}, {"about", about}, {"references", references}};
     fs::path temporary = path;
     temporary += ".tmp";
     {

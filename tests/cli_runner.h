@@ -1,0 +1,33 @@
+// Running the rtlab command line inside a test (cli::run, in process): its exit status and
+// what it wrote to stdout and stderr.
+#pragma once
+
+#include "cli/commands.h"
+
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace rtlab::test {
+
+struct CliResult {
+    int status = 0;
+    std::string out;
+    std::string err;
+};
+
+inline CliResult runCli(std::vector<std::string> arguments) {
+    arguments.insert(arguments.begin(), "rtlab");
+    std::vector<char*> argv;
+    for (std::string& a : arguments) argv.push_back(a.data());
+    std::ostringstream out, err;
+    std::streambuf* originalOut = std::cout.rdbuf(out.rdbuf());
+    std::streambuf* originalErr = std::cerr.rdbuf(err.rdbuf());
+    int status = cli::run(static_cast<int>(argv.size()), argv.data());
+    std::cout.rdbuf(originalOut);
+    std::cerr.rdbuf(originalErr);
+    return {status, out.str(), err.str()};
+}
+
+}  // namespace rtlab::test
