@@ -10,6 +10,7 @@
 #include "bench/octree_report.h"
 #include "bench/kdtree_report.h"
 #include "bench/report.h"
+#include "bench/structures_report.h"
 #include "bench/throughput.h"
 #include "framework/core/error.h"
 
@@ -78,6 +79,7 @@ int runBench(const Options& options) {
         if (!options.outDir.empty()) {
             writeCsv(outPath("results.csv"), records);
             writeGridSweepSvg(outPath("grid-sweep.svg"), records);
+            writeStructuresSvg(outPath("structures.svg"), records);
         }
     }
     if (!options.skipConvergence) {

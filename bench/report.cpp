@@ -103,12 +103,12 @@ void writeMarkdown(std::ostream& out, const std::vector<ThroughputRecord>& recor
     out << "\nMrays/s: best pass, closest hit, one query per ray; 2T = total of two threads. rtlab's "
            "builders are single-threaded, so their 2T build column repeats the 1T figure. Embree does not "
            "count work in its release build (–); the wide BVHs (bvh4, bvh8) count a wide node as one visit. "
-           "Bytes per triangle: the built structure only (rtlab: the BVH's 32-byte nodes, the octree's 12-byte nodes, the grids' "
+           "Bytes per triangle: the built structure only (rtlab: the BVH's 32-byte nodes, the octree's 12-byte nodes, the KD-tree's 8-byte nodes, the grids' "
            "4-byte cell offsets, + 4-byte indices; bvh4/bvh8: "
            "128/256-byte nodes and the triangles in leaf order, four to a 160-byte packet; Embree: what "
            "its memory monitor saw rtcCommitScene keep). "
            "References per triangle: the primitive ids the structure lists, per triangle (a triangle in "
-           "several grid cells or octree leaves counts in each). "
+           "several grid cells, octree leaves or KD-tree leaves counts in each). "
            "Mismatches: rays whose hit/miss or t (|Δt| > 1e-4·max(1,t)) differ from Embree MEDIUM, 1T.\n";
 }
 

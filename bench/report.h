@@ -14,7 +14,8 @@ void writeMarkdown(std::ostream& out, const std::vector<ThroughputRecord>& recor
 
 // Columns: scene,triangles,system,rays,threads,build_ms,mrays_per_s,ratio_to_embree_medium,
 // sah_cost,node_visits_per_ray,prim_tests_per_ray,bytes_per_triangle,mismatches,hits,sum_t,
-// load_average,note,cell_steps_per_ray,plane_steps_per_ray. Empty fields where a figure does not exist.
+// load_average,note,cell_steps_per_ray,plane_steps_per_ray,references_per_triangle. Empty fields
+// where a figure does not exist.
 void writeCsv(const std::string& path, const std::vector<ThroughputRecord>& records);
 
 // The target of issue 6 (docs/performance.md): per scene, the best rtlab BVH's single-thread
