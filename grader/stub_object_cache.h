@@ -15,6 +15,10 @@
 
 namespace rtlab::grader {
 
+// The time limit of the stubs' compile (wall and CPU seconds): generous, because it runs once
+// per cache key and its input is the repository's own code.
+inline constexpr double kStubCompileSeconds = 600.0;
+
 struct StubObjectRequest {
     std::map<std::string, std::string> stubs;  // repository path -> contents
     std::string headersDir;                    // the student headers the stubs include

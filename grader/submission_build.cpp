@@ -145,9 +145,15 @@ SubmissionBuild buildSubmission(const std::string& submissionDir, const std::str
     // run; if that object cannot be had, they compile with the submission as before.
     auto ungraded = takeUngraded(stubs, gradedFolders);
     if (!ungraded.empty()) {
+        // The stubs are committed code compiled once per cache key, not the submission: the
+        // submission's compile limit is for its own files, and a loaded machine may need more
+        // than that for every other assignment's stubs. Still a hard limit.
+        ProcessLimits stubLimits = processLimits;
+        stubLimits.wallSeconds = std::max(limits.wallSeconds, kStubCompileSeconds);
+        stubLimits.cpuSeconds = static_cast<int>(stubLimits.wallSeconds) + 1;
         std::string why;
         std::string object = compiledStubObject({ungraded, host.headers, toolchain, (fs::path(toolchainPath).parent_path() / "stub-objects").string(),
-                                                 (fs::path(workDir) / "stubs").string(), processLimits},
+                                                 (fs::path(workDir) / "stubs").string(), stubLimits},
                                                 &why);
         if (object.empty()) stubs.merge(ungraded);
         else fs::copy_file(object, fs::path(host.objects) / "stubs.o", fs::copy_options::overwrite_existing);
