@@ -196,7 +196,7 @@ void addGradeCommand(CLI::App& app) {
     cmd->add_option("--fail-under", flags->failUnder, "Exit non-zero when the score is below P percent of the maximum")
         ->check(CLI::Range(0.0, 100.0));
     cmd->add_option("--jobs", flags->jobs, "Submissions graded in parallel")->capture_default_str()->check(CLI::Range(1, 64));
-    cmd->add_option("--time-limit", flags->grading.limits.wallSeconds, "Wall-clock seconds per test phase")
+    cmd->add_option("--time-limit", flags->grading.limits.wallSeconds, "Seconds of CPU time per test phase (at most 4 times that of wall-clock time)")
         ->capture_default_str()->check(CLI::Range(0.1, 600.0));
     cmd->add_option("--compile-time-limit", flags->grading.compile.wallSeconds,
                     "Wall-clock seconds a submission's build may take (then the compiler is stopped)")

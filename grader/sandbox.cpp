@@ -35,6 +35,9 @@ constexpr uint64_t kWorkerBaseMiB = 64;  // the worker's own code, stacks and th
 constexpr uid_t kNobody = 65534;
 // After the end of its request a worker has this long to say Done and exit.
 constexpr double kEndSeconds = 2.0;
+// A phase's limit is CPU time, and its wall-clock time may be this many times the limit: room
+// for a machine with four runnable processes per core.
+constexpr double kLoadAllowance = 4.0;
 
 std::string signalName(int sig) {
     const char* abbreviation = sigabbrev_np(sig);
@@ -147,6 +150,7 @@ private:
         if (step >= order_.size()) {
             put<uint32_t>(worker::kEndOfRequest);
             deadline_ = Clock::now() + seconds(kEndSeconds);
+            cpuAtPhase_.reset();  // the end has a wall-clock deadline only
             return;
         }
         const ChildPhase& phase = phases_[order_[step]];
@@ -157,6 +161,23 @@ private:
         pendingRequest_.insert(pendingRequest_.end(), phase.input.begin(), phase.input.end());
         phaseRequestedAt_ = Clock::now();
         deadline_ = phaseRequestedAt_ + seconds(spec_.limits.wallSeconds);
+        cpuAtPhase_ = processCpuSeconds(pid_);
+    }
+
+    // Called at the deadline. The phase's limit is CPU time: on a loaded machine the worker
+    // waits for a core, and the wait is not the student's. So while the phase has used less
+    // CPU than its limit, the deadline moves to when it could have used it all, but never past
+    // kLoadAllowance times the limit of wall-clock time (a worker that sleeps or blocks).
+    bool phaseOverran() {
+        const double limit = spec_.limits.wallSeconds;
+        const Clock::time_point now = Clock::now();
+        auto cpu = processCpuSeconds(pid_);
+        if (!cpu || !cpuAtPhase_) return true;
+        double used = *cpu - *cpuAtPhase_;
+        Clock::time_point backstop = phaseRequestedAt_ + seconds(kLoadAllowance * limit);
+        if (used >= limit || now >= backstop) return true;
+        deadline_ = std::min(backstop, now + seconds(limit - used));
+        return false;
     }
 
     template <typename T>
@@ -171,6 +192,7 @@ private:
         while ((open[0] || open[1]) && !malformed() && !conversation_->done()) {
             auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline_ - Clock::now()).count();
             if (left <= 0) {
+                if (!phaseOverran()) continue;
                 overran_ = true;
                 return;
             }
@@ -277,7 +299,7 @@ private:
         while (!overran_ && !malformed()) {
             pid_t r = waitpid(pid_, &status, WNOHANG);
             if (r == pid_) return status;
-            if (Clock::now() >= deadline_) {
+            if (Clock::now() >= deadline_ && phaseOverran()) {
                 overran_ = true;
                 break;
             }
@@ -335,7 +357,7 @@ private:
     pid_t pid_ = -1;
     int requestFd_ = -1;
     Clock::time_point phaseRequestedAt_, deadline_;
-    std::optional<double> cpuAtStart_;
+    std::optional<double> cpuAtStart_, cpuAtPhase_;
     bool overran_ = false;
 };
 

@@ -18,7 +18,7 @@
 namespace rtlab::grader {
 
 struct SandboxLimits {
-    double wallSeconds = 5.0;  // per phase
+    double wallSeconds = 5.0;  // per phase: CPU seconds, and at most 4 times that of wall clock (sandbox.cpp)
     int cpuSeconds = 30;        // per worker, all threads together
     int memoryMiB = 512;        // address space of a worker beyond its inputs
 };
