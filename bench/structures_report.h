@@ -1,4 +1,4 @@
-// The comparison of the lecture's structures on the same scenes (docs/partitions.md): build time
+// The comparison of the lecture's structures on the same scenes (docs/structures-compared.md): build time
 // against trace time, one point per structure, so the "time to image" trade-off of spatial and
 // object partitions can be read off one chart.
 #pragma once
