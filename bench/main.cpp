@@ -9,6 +9,7 @@
 #include "bench/grid_report.h"
 #include "bench/octree_report.h"
 #include "bench/kdtree_report.h"
+#include "bench/render_race.h"
 #include "bench/report.h"
 #include "bench/structures_report.h"
 #include "bench/throughput.h"
@@ -38,6 +39,8 @@ struct Options {
     bool skipConvergence = false;
     bool skipParameters = false;
     bool skipEstimators = false;
+    bool skipRender = false;
+    RenderRaceOptions renderRace;
     std::string convergenceScene = "bunny";
     std::string estimatorScene = "scenes/radiometry/penumbra.gltf";
     std::string parameterScene = "engine";
@@ -117,6 +120,14 @@ int runBench(const Options& options) {
             writeParameterSvgs(outPath("pareto-build-trace.svg"), outPath("sah-vs-trace.svg"), sweep, points);
         }
     }
+    if (!options.skipRender) {
+        RenderRaceOptions race = options.renderRace;
+        race.modelsDir = options.modelsDir;
+        if (options.quick) race = quickRenderRace(race);
+        RenderRaceResult result = runRenderRace(race);
+        std::cout << "\n## The renderer against POV-Ray\n\n";
+        writeRenderRaceMarkdown(std::cout, result);
+    }
     if (!options.outDir.empty()) std::cout << "\nCSV and SVG files are in " << options.outDir << "\n";
     return 0;
 }
@@ -151,6 +162,11 @@ int main(int argc, char** argv) {
     app.add_flag("--no-convergence", options.skipConvergence, "Skip image error against samples per pixel");
     app.add_flag("--no-parameters", options.skipParameters, "Skip the bucket count / leaf size sweep");
     app.add_flag("--no-estimators", options.skipEstimators, "Skip the estimators of direct light (a6) against each other");
+    app.add_flag("--no-render", options.skipRender, "Skip the render against POV-Ray's (and its time beyond tracing)");
+    app.add_option("--render-scene", options.renderRace.scene, "Scene of the render against POV-Ray")->capture_default_str();
+    app.add_option("--render-size", options.renderRace.size, "Width and height of that render (--quick: 196)")
+        ->check(CLI::Range(1, 1 << 15))
+        ->capture_default_str();
     app.add_option("--convergence-scene", options.convergenceScene, "Scene of the samples-per-pixel study");
     app.add_option("--parameter-scene", options.parameterScene, "Scene of the parameter sweep");
     app.add_option("--estimator-scene", options.estimatorScene, "Scene of the estimator comparison (area lights)")

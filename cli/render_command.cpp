@@ -8,6 +8,8 @@
 #include "framework/core/error.h"
 #include "framework/render/image_io.h"
 #include "framework/render/renderer.h"
+#include "framework/render/trace_share.h"
+#include "framework/accel/accelerator_registry.h"
 #include "framework/render/tiles.h"
 #include "framework/scene/gltf_loader.h"
 
@@ -45,7 +47,11 @@ struct RenderOptions {
     int samplesPerPixel = 1;
     uint64_t seed = 0;
     std::string lightSampling = lightSamplingName(RenderSettings().lightSampling);
+    bool timings = false;
 };
+
+// How many renders and replays --timings takes the best of.
+constexpr int kTimingRepeats = 3;
 
 // A missing side follows from the other and the camera's aspect ratio.
 void resolveImageSize(RenderOptions& options, const Camera& camera) {
@@ -130,6 +136,11 @@ void render(RenderOptions options) {
     if (!result.aovs.cost.empty()) std::printf("; cost AOV max %u", maxCount(result.aovs.cost));
     if (!result.aovs.steps.empty()) std::printf("; steps AOV max %u", maxCount(result.aovs.steps));
     std::printf("\n");
+    if (options.timings) {
+        TraceShare share = measureTraceShare(scene, camera, *accelerator, settings, kTimingRepeats);
+        std::printf("timings (best of %d): render %.3f s, its %zu queries traced alone %.3f s, beyond tracing %.1f %%\n",
+                    kTimingRepeats, share.renderSeconds, share.queries, share.traceSeconds, 100.0 * share.beyondTracing());
+    }
 }
 
 }  // namespace
@@ -148,6 +159,8 @@ void addRenderCommand(CLI::App& app) {
     command->add_option("--height", options->height, "Image height in pixels (default from the width and the camera's aspect, else 4:3)")
         ->check(CLI::Range(1, 1 << 15));
     command->add_option("--camera", options->cameraName, "Camera by name (default: the first)");
+    // With fast/ linked in (rtlab-solution), the fastest structure renders unless --accel says otherwise.
+    if (const AcceleratorType* fastest = fastestAcceleratorType()) options->accelerator.name = fastest->name;
     addAcceleratorOptions(command, options->accelerator, "Accelerator");
     // Whether --accel was given decides whether an a2 stub may fall back to bvh-median.
     CLI::Option* accel = command->get_option("--accel");
@@ -174,6 +187,9 @@ void addRenderCommand(CLI::App& app) {
                         "(uniform hemisphere or cosine-weighted)")
         ->check(CLI::IsMember({"area", "solid-angle", "hemisphere", "cosine"}))
         ->capture_default_str();
+    command->add_flag("--timings", options->timings,
+                      "Also time the render's own accelerator queries alone (best of 3 renders and 3 replays) and "
+                      "print the share of the time spent beyond tracing");
     command->callback([options, accel] {
         options->acceleratorGiven = accel->count() > 0;
         render(*options);

@@ -9,14 +9,22 @@ namespace rtlab {
 namespace {
 
 template <int W>
-AcceleratorType wideBvhType(const char* name, const char* description) {
+AcceleratorType wideBvhType(const char* name, const char* description, int speedRank) {
     return {name, description, bvhTreeOptions(),
             [](const AcceleratorParameters& p) { return std::make_unique<WideBvhAccelerator<W>>(bvhOptionsFrom(p)); },
-            {std::string(name) + "-sah", std::string(name) + "-buckets:12"}};
+            {std::string(name) + "-sah", std::string(name) + "-buckets:12"}, speedRank};
 }
 
-const AcceleratorRegistration kFourWide{wideBvhType<4>("bvh4", "the bvh tree four wide (fast/)")};
-const AcceleratorRegistration kEightWide{wideBvhType<8>("bvh8", "the bvh tree eight wide (fast/)")};
+// Eight lanes fill one AVX register; without AVX they run as two SSE halves and the four-wide
+// tree renders faster (docs/performance.md#the-renderer).
+#if defined(__AVX__)
+constexpr int kFourWideRank = 1, kEightWideRank = 2;
+#else
+constexpr int kFourWideRank = 2, kEightWideRank = 1;
+#endif
+
+const AcceleratorRegistration kFourWide{wideBvhType<4>("bvh4", "the bvh tree four wide (fast/)", kFourWideRank)};
+const AcceleratorRegistration kEightWide{wideBvhType<8>("bvh8", "the bvh tree eight wide (fast/)", kEightWideRank)};
 
 }  // namespace
 }  // namespace rtlab

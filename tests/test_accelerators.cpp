@@ -165,6 +165,18 @@ TEST_CASE("accelerator names: options, defaults, ranges and the older spellings"
     }
 }
 
+TEST_CASE("the fastest structure is one of fast/'s, and only they rank") {
+    // This test links fast/, as rtlab-solution does: its render defaults to a wide BVH.
+    const AcceleratorType* fastest = fastestAcceleratorType();
+    REQUIRE(fastest != nullptr);
+    CHECK((fastest->name == "bvh4" || fastest->name == "bvh8"));
+    for (const AcceleratorType* type : acceleratorTypes()) {
+        CAPTURE(type->name);
+        CHECK(type->speedRank <= fastest->speedRank);
+        if (type->name != "bvh4" && type->name != "bvh8") CHECK(type->speedRank == 0);
+    }
+}
+
 TEST_CASE("the grid's cells hold exactly the primitives whose boxes overlap them") {
     for (NamedScene& named : scenes()) {
         CAPTURE(named.name);

@@ -7,6 +7,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstring>
 
 using namespace rtlab;
 
@@ -83,4 +84,27 @@ TEST_CASE("camera: default glTF orientation, pixel (0,0) is the top-left corner"
     double halfHeight = std::tan(0.5);
     CHECK(centre.direction.x / -centre.direction.z == doctest::Approx(0.5 * halfHeight).epsilon(1e-6));
     CHECK(centre.direction.y / -centre.direction.z == doctest::Approx(-0.5 * halfHeight).epsilon(1e-6));
+}
+
+TEST_CASE("camera: the film set up once gives generateRay's rays bit for bit, by columns and rows") {
+    Camera camera;
+    camera.position = {0.4, -1.3, 2.2};
+    camera.forward = {-0.2, 0.3, -1.0};
+    camera.up = {0.1, 1.0, 0.05};
+    camera.yfov = 0.7;
+    const int width = 37, height = 23;
+    CameraFilm film = camera.film(width, height);
+    for (int j = 0; j < height; ++j) {
+        for (int i = 0; i < width; ++i) {
+            // The renderer's path: one column term per column, one row term per row.
+            Ray byTerms = film.through(film.column(i + 0.5), film.row(j + 0.5));
+            Ray reference = camera.generateRay(i, j, width, height);
+            REQUIRE(std::memcmp(&byTerms.direction, &reference.direction, sizeof(Vec3)) == 0);
+            REQUIRE(byTerms.origin == reference.origin);
+            // Between pixel centres (stratified samples), through the same film.
+            Ray inside = film.through(i + 0.125, j + 0.875);
+            Ray insideReference = camera.generateRayThrough(i + 0.125, j + 0.875, width, height);
+            REQUIRE(std::memcmp(&inside.direction, &insideReference.direction, sizeof(Vec3)) == 0);
+        }
+    }
 }

@@ -241,3 +241,11 @@ TEST_CASE("pov export: shadow tolerance - an occluder within 1e-3 of the light s
     CHECK(near.shareOverThreshold() > 0.3);
     CHECK(near.maxCodes() > 10000.0);
 }
+
+TEST_CASE("pov export: POV-Ray's Trace Time of a reference render is read from its log") {
+    Scene scene = litQuad();
+    double seconds = timePovReference(scene, scene.cameras.front(), 64, 48);
+    CHECK(seconds >= 0.0);
+    CHECK(seconds < kPovrayTimeLimitSeconds);
+    CHECK_THROWS_AS(timePovReference(scene, scene.cameras.front(), 0, 48), Error);
+}

@@ -5,6 +5,7 @@
 #include "framework/core/error.h"
 #include "framework/core/pcg32.h"
 #include "framework/render/renderer.h"
+#include "framework/render/trace_share.h"
 
 #include <doctest/doctest.h>
 
@@ -322,4 +323,31 @@ TEST_CASE("renderer: AOV images (depth scaled for integer files, cost and steps 
     CHECK(primitiveColour(0) != primitiveColour(1));
     CHECK(parseAov("prim") == Aov::Primitive);
     CHECK_THROWS_AS(parseAov("albedo"), Error);
+}
+
+TEST_CASE("renderer: the trace share replays exactly the render's own accelerator queries") {
+    Scene scene;
+    uint32_t grey = addMaterial(scene, Vec3(0.6f));
+    addSquareZ(scene, 0, 0, -3.0f, 10.0f, grey);
+    addSquareZ(scene, 1, 0, -2.0f, 0.2f, grey);
+    addLight(scene, {1.0f, 0.0f, -1.0f}, 2.0f);
+    addLight(scene, {-1.0f, 0.5f, -1.0f}, 1.0f);
+    RenderResult render = renderScene(scene, axisCamera(), 48, 32);
+    PrimitiveSet primitives(scene);
+    auto accelerator = makeAccelerator({.name = "brute"});
+    accelerator->build(primitives);
+    RenderSettings settings;
+    settings.width = 48;
+    settings.height = 32;
+    settings.threads = 2;
+    TraceShare share = measureTraceShare(scene, axisCamera(), *accelerator, settings, 2);
+    // Every camera ray and every shadow ray, once.
+    CHECK(share.queries == render.primary.rays + render.shadow.rays);
+    CHECK(render.shadow.rays > 0);
+    CHECK(share.renderSeconds > 0.0);
+    CHECK(share.traceSeconds > 0.0);
+    CHECK(share.beyondTracing() >= 0.0);
+    CHECK(share.beyondTracing() < 1.0);
+    CHECK(TraceShare{2.0, 1.5, 1}.beyondTracing() == doctest::Approx(0.25));
+    CHECK(TraceShare{1.0, 1.5, 1}.beyondTracing() == 0.0);  // a replay slower than the render: none beyond
 }

@@ -133,6 +133,13 @@ std::vector<const AcceleratorType*> acceleratorTypes() {
     return types;
 }
 
+const AcceleratorType* fastestAcceleratorType() {
+    const AcceleratorType* fastest = nullptr;
+    for (const AcceleratorType* type : acceleratorTypes())
+        if (type->speedRank > 0 && (!fastest || type->speedRank > fastest->speedRank)) fastest = type;
+    return fastest;
+}
+
 std::vector<AcceleratorOption> bvhTreeOptions() {
     return {
         {"split", "split rule: a1's median, middle, equal (counts), a2's sah (full sweep), buckets", "buckets", 0, 0, false,

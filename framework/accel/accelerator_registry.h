@@ -48,6 +48,9 @@ struct AcceleratorType {
     std::vector<AcceleratorOption> options;
     std::function<std::unique_ptr<Accelerator>(const AcceleratorParameters&)> make;
     std::vector<std::string> benchRows;  // the names the throughput benchmark runs
+    // How fast it renders on this build, among the tuned structures of fast/ (0: not one).
+    // rtlab-solution renders with the highest-ranked by default; students' structures are 0.
+    int speedRank = 0;
 
     const AcceleratorOption* option(std::string_view key) const;
     // Parses "k=v,k=v" (empty for all defaults); throws rtlab::Error naming what is wrong.
@@ -64,6 +67,10 @@ struct AcceleratorRegistration {
 const AcceleratorType* findAcceleratorType(std::string_view name);
 // Every structure this executable has, the framework's first, then the registered ones by name.
 std::vector<const AcceleratorType*> acceleratorTypes();
+
+// The structure with the highest speedRank above 0, or nullptr when this executable has none
+// (the student's rtlab, which leaves fast/ out).
+const AcceleratorType* fastestAcceleratorType();
 
 // The option lists of the binary BVH, shared with the other traversals of the same tree.
 std::vector<AcceleratorOption> bvhTreeOptions();

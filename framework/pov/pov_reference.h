@@ -21,4 +21,9 @@ std::string povReferenceSettings(int width, int height);
 void renderPovReference(const Scene& scene, const Camera& camera, int width, int height,
                         const std::filesystem::path& outputPng);
 
+// Renders the reference as renderPovReference does, without keeping the image, and returns the
+// Trace Time POV-Ray reports in seconds: the rendering alone, without parsing and bounding,
+// so it compares with a renderer's time for the same image (bench/render_race.h).
+double timePovReference(const Scene& scene, const Camera& camera, int width, int height);
+
 }  // namespace rtlab

@@ -58,6 +58,97 @@ struct PixelSamples {
     }
 };
 
+// Renders the pixels of tiles into one RenderResult. Everything that is the same for every
+// pixel (the camera's film, the area lights, the scene's reach) is set up once, here.
+class TileRenderer {
+public:
+    TileRenderer(const Scene& scene, const Camera& camera, const Accelerator& accelerator,
+                 const RenderSettings& settings, RenderResult& result)
+        : scene_(scene),
+          accelerator_(accelerator),
+          settings_(settings),
+          film_(camera.film(settings.width, settings.height)),
+          areaLights_(scene),
+          reach_(sceneReach(scene)),
+          anyAov_(!settings.aovs.empty()),
+          result_(result) {
+        centreColumns_.reserve(settings.width);
+        for (int x = 0; x < settings.width; ++x) centreColumns_.push_back(film_.column(x + 0.5));
+    }
+
+    void render(const Tile& tile, TileStats& stats) const {
+        const int spp = settings_.samplesPerPixel;
+        PixelSamples samples(spp, !areaLights_.empty());
+        // At one sample with point lights only no random number is used: none is drawn.
+        const bool random = spp > 1 || !areaLights_.empty();
+        Ray centreRays[kTileSize];
+        for (int y = tile.y0; y < tile.y1; ++y) {
+            // One sample keeps POV-Ray's ray through the pixel centre. The rays of a tile's row
+            // are made together: their square roots and divisions overlap instead of waiting
+            // on each other between two traversals.
+            if (spp == 1) {
+                const DVec3 centreRow = film_.row(y + 0.5);
+                for (int x = tile.x0; x < tile.x1; ++x) centreRays[x - tile.x0] = film_.through(centreColumns_[x], centreRow);
+            }
+            for (int x = tile.x0; x < tile.x1; ++x) {
+                size_t pixel = static_cast<size_t>(y) * settings_.width + x;
+                if (random) samples.generate(settings_.seed, pixel);
+                Vec3 sum(0.0f);
+                for (int s = 0; s < spp; ++s) {
+                    Ray ray = spp == 1 ? centreRays[x - tile.x0] : film_.through(x + samples.film[s].x, y + samples.film[s].y);
+                    sum += radiance(ray, samples, s, x, y, pixel, stats);
+                }
+                result_.colour.setRgb(x, y, sum / static_cast<float>(spp));
+            }
+        }
+    }
+
+private:
+    // The radiance along camera ray number s of pixel (x, y); the first sample fills the AOVs.
+    Vec3 radiance(const Ray& ray, const PixelSamples& samples, int s, int x, int y, size_t pixel, TileStats& stats) const {
+        // The accelerator counts straight into the tile's totals; the ray's own work is their
+        // difference, taken only for the AOVs.
+        const bool aovs = s == 0 && anyAov_;
+        const TraversalStats before = aovs ? stats.primary : TraversalStats{};
+        Hit hit = accelerator_.intersect(ray, stats.primary);
+        Vec3 radiance(0.0f), normal(0.0f);  // misses are black
+        if (hit.found()) {
+            SurfaceHit surface = scene_.surfaceAt(ray, hit);
+            normal = faceViewer(surface.shadingNormal, ray.direction);
+            radiance = directLighting(scene_, accelerator_, surface, ray.direction, stats.shadow);
+            if (!areaLights_.empty()) {
+                ShadingPoint point{surface.point, normal, scene_.materials[surface.material].albedo};
+                AcceleratorRays rays(scene_, accelerator_, surface, reach_, stats.shadow);
+                radiance += areaLights_.estimate(point, rays, settings_.lightSampling, samples.pick[s], samples.light[s]);
+            }
+        }
+        if (aovs) writeAovs(x, y, pixel, hit, normal, before, stats.primary);
+        return radiance;
+    }
+
+    void writeAovs(int x, int y, size_t pixel, const Hit& hit, const Vec3& normal, const TraversalStats& before,
+                   const TraversalStats& after) const {
+        AovBuffers& aovs = result_.aovs;
+        uint64_t steps = after.steps() - before.steps();
+        uint64_t tests = after.primitiveTests - before.primitiveTests;
+        if (!aovs.cost.empty()) aovs.cost[pixel] = static_cast<uint32_t>(steps + tests);
+        if (!aovs.steps.empty()) aovs.steps[pixel] = static_cast<uint32_t>(steps);
+        if (!aovs.depth.pixels.empty()) aovs.depth.at(x, y, 0) = hit.found() ? hit.t : kInfinity;
+        if (!aovs.primitive.empty()) aovs.primitive[pixel] = hit.prim;
+        if (!aovs.normal.pixels.empty() && hit.found()) aovs.normal.setRgb(x, y, 0.5f * normal + 0.5f);
+    }
+
+    const Scene& scene_;
+    const Accelerator& accelerator_;
+    const RenderSettings& settings_;
+    const CameraFilm film_;
+    std::vector<DVec3> centreColumns_;  // film_.column of every pixel centre
+    const AreaLights areaLights_;
+    const float reach_;
+    const bool anyAov_;
+    RenderResult& result_;
+};
+
 }  // namespace
 
 RenderResult Renderer::render(const RenderSettings& settings) const {
@@ -68,60 +159,18 @@ RenderResult Renderer::render(const RenderSettings& settings) const {
     const int spp = settings.samplesPerPixel;
     if (spp < 1 || spp > kMaxSamplesPerPixel)
         throw Error(std::to_string(spp) + " samples per pixel is out of range (1.." + std::to_string(kMaxSamplesPerPixel) + ")");
-    const AreaLights areaLights(scene_);
-    const float reach = sceneReach(scene_);
 
     auto start = std::chrono::steady_clock::now();
     RenderResult result;
     result.colour = Image(settings.width, settings.height, 3);
     result.aovs = allocateAovs(settings);
-    AovBuffers& aovs = result.aovs;
+    const TileRenderer renderer(scene_, camera_, accelerator_, settings, result);
 
     std::vector<Tile> tiles = makeTiles(settings.width, settings.height);
     std::vector<TileStats> tileStats(tiles.size());
     ProgressBar progress("rendering", settings.progress ? tiles.size() : 0);
-
-    parallelFor(tiles.size(), settings.threads, [&](size_t tileIndex) {
-        const Tile& tile = tiles[tileIndex];
-        TileStats& stats = tileStats[tileIndex];
-        PixelSamples samples(spp, !areaLights.empty());
-        for (int y = tile.y0; y < tile.y1; ++y) {
-            for (int x = tile.x0; x < tile.x1; ++x) {
-                size_t pixel = static_cast<size_t>(y) * settings.width + x;
-                samples.generate(settings.seed, pixel);
-                Vec3 sum(0.0f);
-                for (int s = 0; s < spp; ++s) {
-                    // One sample keeps POV-Ray's ray through the pixel centre.
-                    Ray ray = spp == 1 ? camera_.generateRay(x, y, settings.width, settings.height)
-                                       : camera_.generateRayThrough(x + samples.film[s].x, y + samples.film[s].y,
-                                                                    settings.width, settings.height);
-                    TraversalStats rayStats;
-                    Hit hit = accelerator_.intersect(ray, rayStats);
-                    stats.primary += rayStats;
-                    if (s == 0) {
-                        if (!aovs.cost.empty()) aovs.cost[pixel] = static_cast<uint32_t>(rayStats.steps() + rayStats.primitiveTests);
-                        if (!aovs.steps.empty()) aovs.steps[pixel] = static_cast<uint32_t>(rayStats.steps());
-                        if (!aovs.depth.pixels.empty()) aovs.depth.at(x, y, 0) = hit.found() ? hit.t : kInfinity;
-                    }
-                    if (!hit.found()) continue;  // misses are black
-
-                    SurfaceHit surface = scene_.surfaceAt(ray, hit);
-                    Vec3 normal = faceViewer(surface.shadingNormal, ray.direction);
-                    Vec3 radiance = directLighting(scene_, accelerator_, surface, ray.direction, stats.shadow);
-                    if (!areaLights.empty()) {
-                        ShadingPoint point{surface.point, normal, scene_.materials[surface.material].albedo};
-                        AcceleratorRays rays(scene_, accelerator_, surface, reach, stats.shadow);
-                        radiance += areaLights.estimate(point, rays, settings.lightSampling, samples.pick[s], samples.light[s]);
-                    }
-                    sum += radiance;
-                    if (s == 0) {
-                        if (!aovs.primitive.empty()) aovs.primitive[pixel] = hit.prim;
-                        if (!aovs.normal.pixels.empty()) aovs.normal.setRgb(x, y, 0.5f * normal + 0.5f);
-                    }
-                }
-                result.colour.setRgb(x, y, sum / static_cast<float>(spp));
-            }
-        }
+    parallelFor(tiles.size(), settings.threads, [&](size_t tile) {
+        renderer.render(tiles[tile], tileStats[tile]);
         progress.advance();
     });
 

@@ -1,0 +1,83 @@
+#include "bench/render_race.h"
+
+#include "bench/bench_scenes.h"
+#include "bench/report.h"
+#include "bench/timing.h"
+#include "framework/accel/accelerator_registry.h"
+#include "framework/core/error.h"
+#include "framework/pov/pov_reference.h"
+#include "framework/pov/povray_process.h"
+#include "framework/scene/benchmark_rays.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+
+namespace rtlab::bench {
+namespace {
+
+constexpr double kSpeedupTarget = 3.0;
+constexpr double kBeyondTracingTarget = 0.15;
+
+std::string format(const char* pattern, double value) {
+    char text[64];
+    std::snprintf(text, sizeof text, pattern, value);
+    return text;
+}
+
+}  // namespace
+
+RenderRaceOptions quickRenderRace(RenderRaceOptions options) {
+    options.size = 196;
+    options.repeats = 1;
+    return options;
+}
+
+RenderRaceResult runRenderRace(const RenderRaceOptions& options) {
+    if (options.size < 1 || options.repeats < 1) throw Error("render race: the image size and repeats must be positive");
+    Scene scene = loadBenchScene(options.scene, options.modelsDir);
+    Camera camera = scene.cameras.empty() ? BenchmarkView(scene.bounds()).camera() : scene.cameras.front();
+
+    RenderRaceResult result;
+    result.options = options;
+    result.loadAverage = loadAverage();
+    const AcceleratorType* fastest = fastestAcceleratorType();
+    result.accelerator = fastest ? fastest->name : AcceleratorSpec().name;
+    AcceleratorSpec spec;
+    spec.name = result.accelerator;
+    PrimitiveSet primitives(scene);
+    std::unique_ptr<Accelerator> accelerator = makeAccelerator(spec);
+    accelerator->build(primitives);
+
+    std::cerr << "bench: render race on " << options.scene << " at " << options.size << "x" << options.size << std::flush;
+    RenderSettings settings;
+    settings.width = settings.height = options.size;
+    settings.threads = 1;  // POV-Ray's references render on one thread (+WT1)
+    result.share = measureTraceShare(scene, camera, *accelerator, settings, options.repeats);
+    result.povrayVersion = povrayVersion();
+    result.povTraceSeconds = kInfinity;
+    for (int run = 0; run < options.repeats; ++run)
+        result.povTraceSeconds = std::min(result.povTraceSeconds, timePovReference(scene, camera, options.size, options.size));
+    std::cerr << "\n";
+    return result;
+}
+
+void writeRenderRaceMarkdown(std::ostream& out, const RenderRaceResult& result) {
+    const RenderRaceOptions& o = result.options;
+    out << "Scene " << o.scene << " at " << o.size << "x" << o.size << ", one ray per pixel centre, one thread, best of "
+        << o.repeats << "; load average " << result.loadAverage << ".\n\n"
+        << "| renderer | seconds |\n|---|--:|\n"
+        << "| rtlab-solution render (" << result.accelerator << ", built before) | " << format("%.3f", result.share.renderSeconds)
+        << " |\n"
+        << "| its " << result.share.queries << " accelerator queries alone | " << format("%.3f", result.share.traceSeconds)
+        << " |\n"
+        << "| " << result.povrayVersion << " Trace Time (+WT1) | " << format("%.3f", result.povTraceSeconds) << " |\n\n"
+        << "| target | measured | |\n|---|--:|:-:|\n"
+        << "| POV-Ray's time / ours ≥ " << format("%.0f", kSpeedupTarget) << " | " << format("%.2f", result.speedup()) << " | "
+        << verdict(result.speedup() >= kSpeedupTarget) << " |\n"
+        << "| time beyond tracing ≤ " << format("%.0f", 100 * kBeyondTracingTarget) << " % | "
+        << format("%.1f", 100 * result.share.beyondTracing()) << " % | "
+        << verdict(result.share.beyondTracing() <= kBeyondTracingTarget) << " |\n";
+}
+
+}  // namespace rtlab::bench

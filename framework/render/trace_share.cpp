@@ -1,0 +1,96 @@
+#include "framework/render/trace_share.h"
+
+#include "framework/core/error.h"
+#include "framework/render/tiles.h"
+
+#include <algorithm>
+#include <chrono>
+#include <mutex>
+#include <vector>
+
+namespace rtlab {
+namespace {
+
+struct Query {
+    Ray ray;
+    bool anyHit;
+};
+
+// An accelerator that answers through a built one and writes down every query.
+class RecordingAccelerator : public Accelerator {
+public:
+    explicit RecordingAccelerator(const Accelerator& inner) : inner_(inner) {}
+
+    void build(const PrimitiveSet&) override { throw Error("RecordingAccelerator: records a built accelerator"); }
+    Hit intersect(const Ray& ray, TraversalStats& stats) const override {
+        record(ray, false);
+        return inner_.intersect(ray, stats);
+    }
+    bool occluded(const Ray& ray, TraversalStats& stats) const override {
+        record(ray, true);
+        return inner_.occluded(ray, stats);
+    }
+    StructureView structure() const override { return inner_.structure(); }
+    size_t memoryBytes() const override { return inner_.memoryBytes(); }
+
+    std::vector<Query> takeQueries() { return std::move(queries_); }
+
+private:
+    void record(const Ray& ray, bool anyHit) const {
+        std::lock_guard lock(mutex_);
+        queries_.push_back({ray, anyHit});
+    }
+
+    const Accelerator& inner_;
+    mutable std::mutex mutex_;
+    mutable std::vector<Query> queries_;
+};
+
+// Traces the queries in chunks of consecutive ones, as the renderer's tiles hand out its rays.
+double traceSeconds(const Accelerator& accelerator, const std::vector<Query>& queries, int threads) {
+    constexpr size_t kChunk = 4096;
+    size_t chunks = (queries.size() + kChunk - 1) / kChunk;
+    std::vector<TraversalStats> stats(chunks);
+    auto start = std::chrono::steady_clock::now();
+    parallelFor(chunks, threads, [&](size_t chunk) {
+        size_t end = std::min(queries.size(), (chunk + 1) * kChunk);
+        for (size_t i = chunk * kChunk; i < end; ++i) {
+            if (queries[i].anyHit)
+                accelerator.occluded(queries[i].ray, stats[chunk]);
+            else
+                accelerator.intersect(queries[i].ray, stats[chunk]);
+        }
+    });
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+double TraceShare::beyondTracing() const {
+    return renderSeconds > 0.0 ? std::max(0.0, (renderSeconds - traceSeconds) / renderSeconds) : 0.0;
+}
+
+TraceShare measureTraceShare(const Scene& scene, const Camera& camera, const Accelerator& accelerator,
+                             RenderSettings settings, int repeats) {
+    settings.progress = false;
+    settings.aovs.clear();
+    // One thread records the queries in the order one thread renders them; the image, and so
+    // the set of queries, is the same for every thread count.
+    RenderSettings recording = settings;
+    recording.threads = 1;
+    RecordingAccelerator recorder(accelerator);
+    Renderer(scene, camera, recorder).render(recording);
+    std::vector<Query> queries = recorder.takeQueries();
+
+    TraceShare share;
+    share.queries = queries.size();
+    share.renderSeconds = share.traceSeconds = kInfinity;
+    Renderer renderer(scene, camera, accelerator);
+    for (int pass = 0; pass < std::max(1, repeats); ++pass) {
+        share.renderSeconds = std::min(share.renderSeconds, renderer.render(settings).seconds);
+        share.traceSeconds = std::min(share.traceSeconds, traceSeconds(accelerator, queries, settings.threads));
+    }
+    return share;
+}
+
+}  // namespace rtlab
