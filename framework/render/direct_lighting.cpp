@@ -11,7 +11,9 @@ namespace rtlab {
 Vec3 directLighting(const Scene& scene, const Accelerator& accelerator, const SurfaceHit& surface,
                     const Vec3& rayDirection, TraversalStats& shadowStats) {
     const Material& material = scene.materials[surface.material];
-    Vec3 radiance = emittedRadiance(scene, surface.prim, surface.geometricNormal, -rayDirection);
+    Vec3 radiance = material.emission == Vec3(0.0f)
+                        ? Vec3(0.0f)
+                        : emittedRadiance(scene, surface.prim, surface.geometricNormal, -rayDirection);
     if (material.albedo == Vec3(0.0f)) return radiance;
 
     Vec3 brdf = material.albedo * std::numbers::inv_pi_v<float>;
