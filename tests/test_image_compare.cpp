@@ -4,6 +4,7 @@
 #include "framework/core/error.h"
 #include "framework/render/image_compare.h"
 #include "framework/render/image_io.h"
+#include "tests/output_dirs.h"
 
 #include <doctest/doctest.h>
 
@@ -14,11 +15,7 @@
 using namespace rtlab;
 namespace fs = std::filesystem;
 
-static fs::path outputDir() {
-    fs::path dir = fs::path(RTLAB_BINARY_DIR) / "test-output" / "image_compare";
-    fs::create_directories(dir);
-    return dir;
-}
+static fs::path outputDir() { return test::outputDir("image_compare"); }
 
 static Image uniform(int width, int height, double code) {
     Image image(width, height, 3);

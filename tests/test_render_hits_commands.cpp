@@ -4,6 +4,7 @@
 #include "framework/core/error.h"
 #include "framework/core/ray_file.h"
 #include "framework/render/image_io.h"
+#include "tests/output_dirs.h"
 
 #include <doctest/doctest.h>
 
@@ -20,11 +21,7 @@ namespace {
 
 const std::string kScene = std::string(RTLAB_SOURCE_DIR) + "/scenes/spheres.gltf";
 
-fs::path outputDir() {
-    fs::path dir = fs::path(RTLAB_BINARY_DIR) / "test-output" / "commands";
-    fs::create_directories(dir);
-    return dir;
-}
+fs::path outputDir() { return test::outputDir("commands"); }
 
 int runRtlab(std::vector<std::string> args) {
     args.insert(args.begin(), "rtlab");

@@ -12,6 +12,7 @@
 #include "framework/scene/gltf_loader.h"
 #include "grader/grading_report.h"
 #include "grader/rubric.h"
+#include "tests/output_dirs.h"
 
 #include <OpenImageIO/imageio.h>
 #include <doctest/doctest.h>
@@ -27,11 +28,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path outputDir() {
-    fs::path dir = fs::path(RTLAB_BINARY_DIR) / "test-output" / "student_feedback";
-    fs::create_directories(dir);
-    return dir;
-}
+fs::path outputDir() { return test::outputDir("student_feedback"); }
 
 int runRtlab(std::vector<std::string> args) {
     args.insert(args.begin(), "rtlab");
