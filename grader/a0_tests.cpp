@@ -56,12 +56,18 @@ void recordRayCase(CaseTally& tally, const std::string& id, const std::string& s
 
 // --- Truth tables ---------------------------------------------------------------------------
 
+// A phase that runs `task` on every query: the box, triangle and sphere tables share it.
+template <typename Query>
+ChildPhase queriesPhase(const char* stub, const char* task, const std::vector<Query>& queries) {
+    ByteWriter input;
+    input.putVector(queries);
+    return makePhase(stub, task, std::move(input));
+}
+
 ChildPhase boxTablePhase(std::shared_ptr<const std::vector<BoxCase>> cases) {
     std::vector<worker::BoxQuery> queries;
     for (const BoxCase& c : *cases) queries.push_back({c.box, c.ray});
-    ByteWriter input;
-    input.putVector(queries);
-    return makePhase(kStubBox, worker::kTaskBox, std::move(input));
+    return queriesPhase(kStubBox, worker::kTaskBox, queries);
 }
 
 void scoreBoxTable(const std::vector<BoxCase>& cases, const PhaseOutcome& outcome, TestResult& result) {
@@ -80,9 +86,7 @@ void scoreBoxTable(const std::vector<BoxCase>& cases, const PhaseOutcome& outcom
 }
 
 ChildPhase trianglePhase(const std::vector<worker::TriangleQuery>& queries) {
-    ByteWriter input;
-    input.putVector(queries);
-    return makePhase(kStubTriangle, worker::kTaskTriangle, std::move(input));
+    return queriesPhase(kStubTriangle, worker::kTaskTriangle, queries);
 }
 
 // Every triangle of every case, each with its case's ray.
@@ -121,9 +125,7 @@ void scoreTriangleTable(const std::vector<TriangleCase>& cases, const PhaseOutco
 ChildPhase sphereTablePhase(std::shared_ptr<const std::vector<SphereCase>> cases) {
     std::vector<worker::SphereQuery> queries;
     for (const SphereCase& c : *cases) queries.push_back({c.ray, c.centre, c.radius});
-    ByteWriter input;
-    input.putVector(queries);
-    return makePhase(kStubSphere, worker::kTaskSphere, std::move(input));
+    return queriesPhase(kStubSphere, worker::kTaskSphere, queries);
 }
 
 void scoreSphereTable(const std::vector<SphereCase>& cases, const PhaseOutcome& outcome, TestResult& result) {
@@ -184,9 +186,7 @@ ChildPhase izePhase(const IzeRays& ize) {
     std::vector<worker::BoxQuery> queries;
     for (const Ray& ray : ize.rays)
         for (const Bounds3f& box : ize.boxes) queries.push_back({box, ray});
-    ByteWriter input;
-    input.putVector(queries);
-    return makePhase(kStubBox, worker::kTaskBox, std::move(input));
+    return queriesPhase(kStubBox, worker::kTaskBox, queries);
 }
 
 bool exactSlab(const Bounds3f& box, const Ray& ray) {

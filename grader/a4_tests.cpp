@@ -67,13 +67,22 @@ PhaseState phaseState(const PhaseOutcome& outcome, TestResult& result, std::stri
 
 std::string expectedGot(const std::string& expected, const std::string& got) { return "expected " + expected + ", got " + got; }
 
+// One case of a truth table: what it checks, the call the worker makes, the answer the rule gives.
+template <typename Call, typename Answer>
+struct TableCase {
+    std::string id;
+    Call call;
+    Answer expected;
+};
+
 // A truth-table group of one phase: every case's `call` on the wire (after `input`, what the
 // calls share), each answer read back and judged against the case's `expected`.
-template <typename Answer, typename Case, typename Read, typename Describe>
-TestGroup truthTable(const char* title, const char* test, const char* stub, const char* task, std::vector<Case> list, ByteWriter input,
-                     Read read, Describe describe) {
+template <typename Call, typename Answer, typename Read, typename Describe>
+TestGroup truthTable(const char* title, const char* test, const char* stub, const char* task, std::vector<TableCase<Call, Answer>> list,
+                     ByteWriter input, Read read, Describe describe) {
+    using Case = TableCase<Call, Answer>;
     auto cases = std::make_shared<std::vector<Case>>(std::move(list));
-    std::vector<decltype(Case::call)> calls;
+    std::vector<Call> calls;
     for (const Case& c : *cases) calls.push_back(c.call);
     input.putVector(calls);
     TestGroup group{kA4, title, {makePhase(stub, task, std::move(input))}, {}};
@@ -102,11 +111,7 @@ std::string childText(int32_t k) { return k == kOctreeEnd ? std::string("kOctree
 
 // --- The boxes ----------------------------------------------------------------------------------
 
-struct RootBoxCase {
-    const char* id;
-    Bounds3f call;  // the primitives' bounds
-    Bounds3f expected;
-};
+using RootBoxCase = TableCase<Bounds3f, Bounds3f>;  // call: the primitives' bounds
 
 std::vector<RootBoxCase> rootBoxCases() {
     auto box = [](Vec3 lo, Vec3 hi) { return Bounds3f(lo, hi); };
@@ -127,11 +132,7 @@ std::vector<RootBoxCase> rootBoxCases() {
     };
 }
 
-struct ChildBoxCase {
-    std::string id;
-    worker::ChildBoxCall call;
-    Bounds3f expected;
-};
+using ChildBoxCase = TableCase<worker::ChildBoxCall, Bounds3f>;
 
 std::vector<ChildBoxCase> childBoxCases() {
     // The root of the first root-box case: mid (2, 1, 0.5).
@@ -149,11 +150,7 @@ std::vector<ChildBoxCase> childBoxCases() {
     };
 }
 
-struct ChildIndexCase {
-    const char* id;
-    worker::ChildIndexCall call;
-    int32_t expected;
-};
+using ChildIndexCase = TableCase<worker::ChildIndexCall, int32_t>;
 
 std::vector<ChildIndexCase> childIndexCases() {
     const Vec3 half(0.5f), zero(0.0f);
@@ -170,21 +167,17 @@ std::vector<ChildIndexCase> childIndexCases() {
 }
 
 std::vector<TestGroup> boxGroups() {
-    return {truthTable<Bounds3f>("a4 root box", "a4/boxes/root-box", kStubRootBox, worker::kTaskOctreeRootBox, rootBoxCases(), ByteWriter(),
+    return {truthTable("a4 root box", "a4/boxes/root-box", kStubRootBox, worker::kTaskOctreeRootBox, rootBoxCases(), ByteWriter(),
                                  readPlain<Bounds3f>, describeBox),
-            truthTable<Bounds3f>("a4 child box", "a4/boxes/child-box", kStubChildBox, worker::kTaskOctreeChildBox, childBoxCases(), ByteWriter(),
+            truthTable("a4 child box", "a4/boxes/child-box", kStubChildBox, worker::kTaskOctreeChildBox, childBoxCases(), ByteWriter(),
                                  readPlain<Bounds3f>, describeBox),
-            truthTable<int32_t>("a4 child index", "a4/boxes/child-index", kStubChildIndex, worker::kTaskOctreeChildIndex, childIndexCases(),
+            truthTable("a4 child index", "a4/boxes/child-index", kStubChildIndex, worker::kTaskOctreeChildIndex, childIndexCases(),
                                 ByteWriter(), readPlain<int32_t>, childText)};
 }
 
 // --- Triangle and box ---------------------------------------------------------------------------
 
-struct OverlapCase {
-    const char* id;
-    worker::TriangleBoxCall call;
-    bool expected;
-};
+using OverlapCase = TableCase<worker::TriangleBoxCall, bool>;
 
 std::string overlapText(bool overlaps) { return overlaps ? "overlap" : "no overlap"; }
 bool readOverlap(ByteReader& in) { return in.get<uint8_t>() != 0; }
@@ -295,11 +288,7 @@ TestGroup overlapGroup(uint64_t seed) {
 
 Ray ray(Vec3 o, Vec3 d, float tMin = 0.0f, float tMax = kInf) { return makeRay(o, d, tMin, tMax); }
 
-struct MirrorCase {
-    const char* id;
-    Ray call;
-    MirroredRay expected;
-};
+using MirrorCase = TableCase<Ray, MirroredRay>;
 
 std::string mirrorText(const MirroredRay& m) {
     return "o " + describeVec(m.ray.origin) + " d " + describeVec(m.ray.direction) + " (" + formatNumber(m.ray.tMin) + ", " +
@@ -321,11 +310,7 @@ std::vector<MirrorCase> mirrorCases() {
     };
 }
 
-struct SpanCase {
-    const char* id;
-    Ray call;
-    NodeSpan expected;
-};
+using SpanCase = TableCase<Ray, NodeSpan>;
 
 std::string spanText(const NodeSpan& s) { return "t0 " + describeVec(s.t0) + " t1 " + describeVec(s.t1); }
 
@@ -342,11 +327,7 @@ std::vector<SpanCase> spanCases() {
     };
 }
 
-struct MidCase {
-    const char* id;
-    worker::MidCall call;
-    Vec3 expected;
-};
+using MidCase = TableCase<worker::MidCall, Vec3>;
 
 std::vector<MidCase> midCases() {
     const Bounds3f unit(Vec3(0.0f), Vec3(1.0f)), away(Vec3(2.0f), Vec3(4.0f));
@@ -362,11 +343,7 @@ std::vector<MidCase> midCases() {
     };
 }
 
-struct FirstNodeCase {
-    const char* id;
-    worker::FirstNodeCall call;
-    int32_t expected;
-};
+using FirstNodeCase = TableCase<worker::FirstNodeCall, int32_t>;
 
 std::vector<FirstNodeCase> firstNodeCases() {
     return {
@@ -386,11 +363,7 @@ std::vector<FirstNodeCase> firstNodeCases() {
     };
 }
 
-struct NextNodeCase {
-    const char* id;
-    worker::NextNodeCall call;
-    int32_t expected;
-};
+using NextNodeCase = TableCase<worker::NextNodeCall, int32_t>;
 
 std::vector<NextNodeCase> nextNodeCases() {
     return {
@@ -418,15 +391,15 @@ ByteWriter rootFirst(const Bounds3f& root) {
 }
 
 std::vector<TestGroup> walkGroups() {
-    return {truthTable<MirroredRay>("a4 mirroring", "a4/walk/mirror", kStubMirror, worker::kTaskOctreeMirror, mirrorCases(),
+    return {truthTable("a4 mirroring", "a4/walk/mirror", kStubMirror, worker::kTaskOctreeMirror, mirrorCases(),
                                     rootFirst(kMirrorRoot), readPlain<MirroredRay>, mirrorText),
-            truthTable<NodeSpan>("a4 root span", "a4/walk/root-span", kStubRootSpan, worker::kTaskOctreeRootSpan, spanCases(),
+            truthTable("a4 root span", "a4/walk/root-span", kStubRootSpan, worker::kTaskOctreeRootSpan, spanCases(),
                                  rootFirst(Bounds3f(Vec3(0.0f), Vec3(1.0f))), readPlain<NodeSpan>, spanText),
-            truthTable<Vec3>("a4 mid-plane parameters", "a4/walk/mid-parameters", kStubMid, worker::kTaskOctreeMid, midCases(), ByteWriter(),
+            truthTable("a4 mid-plane parameters", "a4/walk/mid-parameters", kStubMid, worker::kTaskOctreeMid, midCases(), ByteWriter(),
                              readPlain<Vec3>, describeVec),
-            truthTable<int32_t>("a4 first node", "a4/walk/first-node", kStubFirst, worker::kTaskOctreeFirstNode, firstNodeCases(), ByteWriter(),
+            truthTable("a4 first node", "a4/walk/first-node", kStubFirst, worker::kTaskOctreeFirstNode, firstNodeCases(), ByteWriter(),
                                 readPlain<int32_t>, childText),
-            truthTable<int32_t>("a4 next node", "a4/walk/next-node", kStubNext, worker::kTaskOctreeNextNode, nextNodeCases(), ByteWriter(),
+            truthTable("a4 next node", "a4/walk/next-node", kStubNext, worker::kTaskOctreeNextNode, nextNodeCases(), ByteWriter(),
                                 readPlain<int32_t>, childText)};
 }
 

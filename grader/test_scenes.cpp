@@ -4,10 +4,10 @@
 #include "framework/core/pcg32.h"
 #include "framework/scene/benchmark_scenes.h"
 #include "framework/scene/gltf_loader.h"
+#include "framework/scene/icosphere_mesh.h"
 
 #include <cmath>
 #include <filesystem>
-#include <map>
 
 namespace rtlab::grader {
 
@@ -35,43 +35,6 @@ void SceneBuilder::addSphere(const Vec3& centre, float radius) { scene_.spheres.
 
 namespace {
 
-struct Mesh {
-    std::vector<Vec3> positions;
-    std::vector<std::array<uint32_t, 3>> indices;
-};
-
-// Subdivides every triangle into four; midpoints are shared through an edge map so the mesh
-// stays closed with bit-identical shared vertices.
-Mesh subdividedIcosahedron(int levels) {
-    const float g = (1.0f + std::sqrt(5.0f)) / 2.0f;
-    Mesh mesh;
-    mesh.positions = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-                      {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
-    mesh.indices = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                    {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
-                    {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
-    for (Vec3& p : mesh.positions) p = glm::normalize(p);
-    for (int level = 0; level < levels; ++level) {
-        std::map<std::pair<uint32_t, uint32_t>, uint32_t> midpoints;
-        auto midpoint = [&](uint32_t a, uint32_t b) {
-            auto key = std::minmax(a, b);
-            auto [it, inserted] = midpoints.try_emplace(key, static_cast<uint32_t>(mesh.positions.size()));
-            if (inserted) mesh.positions.push_back(glm::normalize(mesh.positions[a] + mesh.positions[b]));
-            return it->second;
-        };
-        std::vector<std::array<uint32_t, 3>> finer;
-        for (const auto& t : mesh.indices) {
-            uint32_t ab = midpoint(t[0], t[1]), bc = midpoint(t[1], t[2]), ca = midpoint(t[2], t[0]);
-            finer.push_back({t[0], ab, ca});
-            finer.push_back({t[1], bc, ab});
-            finer.push_back({t[2], ca, bc});
-            finer.push_back({ab, bc, ca});
-        }
-        mesh.indices = std::move(finer);
-    }
-    return mesh;
-}
-
 float uniform(Pcg32& rng, float lo, float hi) { return lo + (hi - lo) * rng.uniform(); }
 
 // An axis-aligned box [lo, hi] as 12 triangles with shared corners.
@@ -86,8 +49,8 @@ void addBox(SceneBuilder& builder, const Vec3& lo, const Vec3& hi) {
 
 TestScene icosphere(int levels) {
     SceneBuilder builder;
-    Mesh mesh = subdividedIcosahedron(levels);
-    builder.addMesh(mesh.positions, mesh.indices);
+    IndexedMesh mesh = icosphereMesh(levels);
+    builder.addMesh(mesh.positions, mesh.triangles);
     TestScene s{"icosphere-" + std::to_string(levels), "", builder.take(), true, Vec3(0.1f, -0.2f, 0.05f)};
     return s;
 }
@@ -144,11 +107,11 @@ TestScene bunnyOrStandIn(const std::string& modelsDir) {
         why = path + " does not exist (run make models)";
     }
     // A closed, bumpy sphere of 5120 triangles with bunny-like triangle counts per leaf.
-    Mesh mesh = subdividedIcosahedron(4);
+    IndexedMesh mesh = icosphereMesh(4);
     for (Vec3& p : mesh.positions)
         p *= 1.0f + 0.15f * std::sin(7.0f * p.x) * std::sin(5.0f * p.y + 1.0f) * std::sin(3.0f * p.z + 2.0f);
     SceneBuilder builder;
-    builder.addMesh(mesh.positions, mesh.indices);
+    builder.addMesh(mesh.positions, mesh.triangles);
     return TestScene{"blob", "graded on a procedural closed mesh instead of the bunny: " + why, builder.take(), true,
                      Vec3(0.05f, 0.02f, -0.03f)};
 }

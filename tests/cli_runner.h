@@ -7,6 +7,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rtlab::test {
@@ -17,14 +18,19 @@ struct CliResult {
     std::string err;
 };
 
-inline CliResult runCli(std::vector<std::string> arguments) {
+// The exit status alone; what the command writes goes to the test's own output.
+inline int runCliStatus(std::vector<std::string> arguments) {
     arguments.insert(arguments.begin(), "rtlab");
     std::vector<char*> argv;
     for (std::string& a : arguments) argv.push_back(a.data());
+    return cli::run(static_cast<int>(argv.size()), argv.data());
+}
+
+inline CliResult runCli(std::vector<std::string> arguments) {
     std::ostringstream out, err;
     std::streambuf* originalOut = std::cout.rdbuf(out.rdbuf());
     std::streambuf* originalErr = std::cerr.rdbuf(err.rdbuf());
-    int status = cli::run(static_cast<int>(argv.size()), argv.data());
+    int status = runCliStatus(std::move(arguments));
     std::cout.rdbuf(originalOut);
     std::cerr.rdbuf(originalErr);
     return {status, out.str(), err.str()};

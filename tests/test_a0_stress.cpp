@@ -5,7 +5,7 @@
 #include "framework/core/float_bits.h"
 #include "framework/core/pcg32.h"
 #include "framework/interface/a0_intersect.h"
-#include "tests/icosphere_fixture.h"
+#include "framework/scene/icosphere_mesh.h"
 
 #include <doctest/doctest.h>
 
@@ -118,7 +118,7 @@ TEST_CASE("TRI-03: 1e5 rays at random shared edges: never both neighbours missed
 }
 
 TEST_CASE("TRI-04: 2e5 rays at edges and 2e5 at vertices of a closed icosphere never leak") {
-    testing::IndexedMesh mesh = testing::icosphere(2);
+    IndexedMesh mesh = icosphereMesh(2);
     REQUIRE(mesh.triangles.size() == 320);
     // Which triangles touch each edge and each vertex: the ones a ray aimed there must find.
     std::map<std::pair<uint32_t, uint32_t>, std::vector<uint32_t>> edgeTriangles;

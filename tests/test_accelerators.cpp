@@ -9,9 +9,9 @@
 #include "framework/core/error.h"
 #include "framework/core/pcg32.h"
 #include "framework/interface/a3_grid.h"
+#include "framework/scene/icosphere_mesh.h"
 #include "grader/octree_oracle.h"
 #include "grader/test_scenes.h"
-#include "tests/icosphere_fixture.h"
 
 #include <doctest/doctest.h>
 
@@ -35,7 +35,7 @@ struct NamedScene {
 std::vector<NamedScene> scenes() {
     std::vector<NamedScene> list;
     {
-        testing::IndexedMesh mesh = testing::icosphere(3);
+        IndexedMesh mesh = icosphereMesh(3);
         SceneBuilder b;
         b.addMesh(mesh.positions, mesh.triangles);
         list.push_back({"icosphere", b.take()});

@@ -7,6 +7,7 @@
 #include "framework/core/error.h"
 #include "tests/blender_test_scenes.h"
 #include "tests/cli_runner.h"
+#include "tests/output_dirs.h"
 
 #include <doctest/doctest.h>
 
@@ -25,11 +26,7 @@ double area(const Vec3& a, const Vec3& b, const Vec3& c) {
     return 0.5 * glm::length(glm::cross(DVec3(b) - DVec3(a), DVec3(c) - DVec3(a)));
 }
 
-fs::path outputDir() {
-    fs::path dir = fs::path(RTLAB_BINARY_DIR) / "test-output" / "blender_export";
-    fs::create_directories(dir);
-    return dir;
-}
+fs::path outputDir() { return test::outputDir("blender_export"); }
 
 }  // namespace
 

@@ -22,6 +22,7 @@
 #include "framework/scene/gltf_loader.h"
 #include "tests/blender_test_scenes.h"
 #include "tests/cli_runner.h"
+#include "tests/output_dirs.h"
 
 #include <doctest/doctest.h>
 
@@ -37,11 +38,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path outputDir() {
-    fs::path dir = fs::path(RTLAB_BINARY_DIR) / "test-output" / "blender_renders";
-    fs::create_directories(dir);
-    return dir;
-}
+fs::path outputDir() { return test::outputDir("blender_renders"); }
 
 Image blender(const Scene& scene, const Camera& camera, int width, int height, int samples, const std::string& name,
               double emitterEdge = BlenderSettings{}.emitterEdge) {
@@ -197,12 +194,7 @@ TEST_CASE("blender: with the emitter cut Cycles matches Lambert's contour integr
 }
 
 TEST_CASE("rtlab refs --blender: renders, skips what is up to date and sphere lights, --check and --parity") {
-    fs::path root = outputDir() / "refs";
-    fs::remove_all(root);
-    fs::create_directories(root / "scenes" / "radiometry");
-    for (const char* name : {"closed-form.gltf", "sphere-light.gltf"})
-        fs::copy_file(fs::path(RTLAB_SOURCE_DIR) / "scenes" / "radiometry" / name, root / "scenes" / "radiometry" / name);
-    fs::path scenes = root / "scenes";
+    fs::path scenes = test::scratchScenes("blender_renders/refs", {"radiometry/closed-form.gltf", "radiometry/sphere-light.gltf"});
     auto with = [&scenes](std::vector<std::string> head) {
         std::vector<std::string> tail{"--blender", "--scenes", scenes.string(), "--width", "32", "--height", "24",
                                       "--samples", "512"};

@@ -7,7 +7,7 @@
 #include "framework/interface/a2_sah.h"
 #include "framework/oracle/oracle.h"
 #include "framework/scene/gltf_loader.h"
-#include "tests/icosphere_fixture.h"
+#include "framework/scene/icosphere_mesh.h"
 
 #include <doctest/doctest.h>
 
@@ -47,7 +47,7 @@ Vec3 randomIn(Pcg32& rng, const Vec3& lower, const Vec3& upper) {
 }
 
 Scene icosphere(int levels) {
-    testing::IndexedMesh mesh = testing::icosphere(levels);
+    IndexedMesh mesh = icosphereMesh(levels);
     SceneBuilder s;
     for (const Vec3& p : mesh.positions) s.vertex(p);
     for (auto [a, b, c] : mesh.triangles) s.triangle(a, b, c);

@@ -1,9 +1,10 @@
 // Image comparison through OpenImageIO (framework/render/image_compare.h) and `rtlab compare`,
 // on 16-bit PNGs with known differences in codes.
-#include "cli/commands.h"
 #include "framework/core/error.h"
 #include "framework/render/image_compare.h"
 #include "framework/render/image_io.h"
+#include "tests/cli_runner.h"
+#include "tests/output_dirs.h"
 
 #include <doctest/doctest.h>
 
@@ -14,11 +15,7 @@
 using namespace rtlab;
 namespace fs = std::filesystem;
 
-static fs::path outputDir() {
-    fs::path dir = fs::path(RTLAB_BINARY_DIR) / "test-output" / "image_compare";
-    fs::create_directories(dir);
-    return dir;
-}
+static fs::path outputDir() { return test::outputDir("image_compare"); }
 
 static Image uniform(int width, int height, double code) {
     Image image(width, height, 3);
@@ -102,26 +99,19 @@ TEST_CASE("image compare: the heat map colours pixels by their error band") {
     CHECK(many.g < 0.1f);
 }
 
-static int runCli(std::vector<std::string> arguments) {
-    arguments.insert(arguments.begin(), "rtlab");
-    std::vector<char*> argv;
-    for (std::string& a : arguments) argv.push_back(a.data());
-    return cli::run(static_cast<int>(argv.size()), argv.data());
-}
-
 TEST_CASE("rtlab compare: exit status follows the tolerances given") {
     KnownPair pair;
     std::string a = pair.pathA.string(), b = pair.pathB.string();
-    CHECK(runCli({"compare", a, b}) == 0);
-    CHECK(runCli({"compare", a, b, "--max-max", "300"}) == 0);
-    CHECK(runCli({"compare", a, b, "--max-max", "299"}) != 0);
-    CHECK(runCli({"compare", a, b, "--max-share", "0.01"}) == 0);
-    CHECK(runCli({"compare", a, b, "--max-share", "0.009"}) != 0);
-    CHECK(runCli({"compare", a, b, "--threshold", "300", "--max-share", "0"}) == 0);
-    CHECK(runCli({"compare", a, b, "--max-mean", "1"}) != 0);
+    CHECK(test::runCliStatus({"compare", a, b}) == 0);
+    CHECK(test::runCliStatus({"compare", a, b, "--max-max", "300"}) == 0);
+    CHECK(test::runCliStatus({"compare", a, b, "--max-max", "299"}) != 0);
+    CHECK(test::runCliStatus({"compare", a, b, "--max-share", "0.01"}) == 0);
+    CHECK(test::runCliStatus({"compare", a, b, "--max-share", "0.009"}) != 0);
+    CHECK(test::runCliStatus({"compare", a, b, "--threshold", "300", "--max-share", "0"}) == 0);
+    CHECK(test::runCliStatus({"compare", a, b, "--max-mean", "1"}) != 0);
     fs::path heat = outputDir() / "cli_heat.png";
     fs::remove(heat);
-    CHECK(runCli({"compare", a, b, "--diff", heat.string()}) == 0);
+    CHECK(test::runCliStatus({"compare", a, b, "--diff", heat.string()}) == 0);
     CHECK(fs::exists(heat));
-    CHECK(runCli({"compare", a, (outputDir() / "missing.png").string()}) != 0);
+    CHECK(test::runCliStatus({"compare", a, (outputDir() / "missing.png").string()}) != 0);
 }

@@ -4,6 +4,7 @@
 #include "framework/core/error.h"
 #include "framework/core/pcg32.h"
 #include "framework/render/image_io.h"
+#include "tests/output_dirs.h"
 
 #include <OpenImageIO/imageio.h>
 #include <doctest/doctest.h>
@@ -15,11 +16,7 @@
 using namespace rtlab;
 namespace fs = std::filesystem;
 
-static fs::path outputDir() {
-    fs::path dir = fs::path(RTLAB_BINARY_DIR) / "test-output" / "image_io";
-    fs::create_directories(dir);
-    return dir;
-}
+static fs::path outputDir() { return test::outputDir("image_io"); }
 
 // Reads the file's integer codes directly, with no conversion.
 template <typename Code>

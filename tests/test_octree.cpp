@@ -9,13 +9,13 @@
 #include "framework/interface/a4_octree.h"
 #include "framework/render/renderer.h"
 #include "framework/scene/camera.h"
+#include "framework/scene/icosphere_mesh.h"
 #include "grader/octree_cases.h"
 #include "grader/octree_oracle.h"
 #include "grader/octree_structure.h"
 #include "grader/octree_visit_order.h"
 #include "grader/stress_cases.h"
 #include "grader/test_scenes.h"
-#include "tests/icosphere_fixture.h"
 
 #include <doctest/doctest.h>
 
@@ -53,7 +53,7 @@ Scene soup(int count, uint64_t seed) {
 }
 
 Scene icosphereScene(int levels) {
-    testing::IndexedMesh mesh = testing::icosphere(levels);
+    IndexedMesh mesh = icosphereMesh(levels);
     SceneBuilder b;
     b.addMesh(mesh.positions, mesh.triangles);
     return b.take();

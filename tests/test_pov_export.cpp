@@ -10,6 +10,7 @@
 #include "framework/render/image_compare.h"
 #include "framework/render/image_io.h"
 #include "framework/render/renderer.h"
+#include "tests/output_dirs.h"
 
 #include <doctest/doctest.h>
 
@@ -21,11 +22,7 @@
 using namespace rtlab;
 namespace fs = std::filesystem;
 
-static fs::path outputDir() {
-    fs::path dir = fs::path(RTLAB_BINARY_DIR) / "test-output" / "pov_export";
-    fs::create_directories(dir);
-    return dir;
-}
+static fs::path outputDir() { return test::outputDir("pov_export"); }
 
 // A quad in the plane z = -3 facing the camera at the origin, made of two triangles: the left
 // one plain diffuse, the right one with a black red channel and emission (which POV-Ray can

@@ -4,6 +4,7 @@
 #include "framework/external/reference_manifest.h"
 #include "framework/render/image_io.h"
 #include "tests/cli_runner.h"
+#include "tests/output_dirs.h"
 
 #include <doctest/doctest.h>
 
@@ -15,20 +16,8 @@ using test::CliResult;
 using test::runCli;
 namespace fs = std::filesystem;
 
-namespace {
-
-fs::path scratchScenes() {
-    fs::path root = fs::path(RTLAB_BINARY_DIR) / "test-output" / "refs";
-    fs::remove_all(root);
-    fs::create_directories(root / "scenes");
-    fs::copy_file(fs::path(RTLAB_SOURCE_DIR) / "scenes" / "light-behind.gltf", root / "scenes" / "light-behind.gltf");
-    return root / "scenes";
-}
-
-}  // namespace
-
 TEST_CASE("rtlab refs: render, skip when up to date, re-render and --check when changed") {
-    fs::path scenes = scratchScenes();
+    fs::path scenes = test::scratchScenes("refs", {"light-behind.gltf"});
     std::vector<std::string> size{"--scenes", scenes.string(), "--width", "64", "--height", "48"};
     auto with = [&size](std::vector<std::string> head) {
         head.insert(head.end(), size.begin(), size.end());
@@ -73,7 +62,7 @@ TEST_CASE("rtlab refs: render, skip when up to date, re-render and --check when 
 }
 
 TEST_CASE("rtlab refs --hits: POV-Ray's trace() agrees with the oracle on a committed scene") {
-    fs::path scenes = scratchScenes();
+    fs::path scenes = test::scratchScenes("refs", {"light-behind.gltf"});
     CliResult hits = runCli({"refs", "--hits", "--rays", "300", "--scenes", scenes.string()});
     CHECK(hits.status == 0);
     CHECK(hits.out.find("agree: 300 rays") != std::string::npos);

@@ -1,9 +1,10 @@
 // `rtlab render` and `rtlab hits` end to end on a committed glTF scene: files written, the CSV
 // contract, the accelerator agreeing with the oracle, and one-line errors with exit code 1.
-#include "cli/commands.h"
 #include "framework/core/error.h"
 #include "framework/core/ray_file.h"
 #include "framework/render/image_io.h"
+#include "tests/cli_runner.h"
+#include "tests/output_dirs.h"
 
 #include <doctest/doctest.h>
 
@@ -20,18 +21,7 @@ namespace {
 
 const std::string kScene = std::string(RTLAB_SOURCE_DIR) + "/scenes/spheres.gltf";
 
-fs::path outputDir() {
-    fs::path dir = fs::path(RTLAB_BINARY_DIR) / "test-output" / "commands";
-    fs::create_directories(dir);
-    return dir;
-}
-
-int runRtlab(std::vector<std::string> args) {
-    args.insert(args.begin(), "rtlab");
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    return cli::run(static_cast<int>(argv.size()), argv.data());
-}
+fs::path outputDir() { return test::outputDir("commands"); }
 
 std::vector<std::vector<std::string>> readCsv(const fs::path& path, std::string* header) {
     std::ifstream in(path);
@@ -71,7 +61,7 @@ fs::path writeRays() {
 TEST_CASE("rtlab hits: CSV contract, and brute force and BVH agree with the oracle") {
     fs::path rays = writeRays();
     fs::path oracleCsv = outputDir() / "oracle.csv";
-    REQUIRE(runRtlab({"hits", kScene, "--rays", rays.string(), "--accel", "oracle", "-o", oracleCsv.string()}) == 0);
+    REQUIRE(test::runCliStatus({"hits", kScene, "--rays", rays.string(), "--accel", "oracle", "-o", oracleCsv.string()}) == 0);
     std::string header;
     auto oracle = readCsv(oracleCsv, &header);
     CHECK(header == "ray,hit,t,prim,px,py,pz,nx,ny,nz");
@@ -93,7 +83,7 @@ TEST_CASE("rtlab hits: CSV contract, and brute force and BVH agree with the orac
     for (const char* accel : {"brute", "bvh-buckets"}) {
         CAPTURE(accel);
         fs::path csv = outputDir() / (std::string(accel) + ".csv");
-        REQUIRE(runRtlab({"hits", kScene, "--rays", rays.string(), "--accel", accel, "-o", csv.string()}) == 0);
+        REQUIRE(test::runCliStatus({"hits", kScene, "--rays", rays.string(), "--accel", accel, "-o", csv.string()}) == 0);
         auto rows = readCsv(csv, &header);
         REQUIRE(rows.size() == oracle.size());
         for (size_t i = 0; i < rows.size(); ++i) {
@@ -109,7 +99,7 @@ TEST_CASE("rtlab hits: a malformed ray file names its line") {
     fs::path rays = outputDir() / "bad-rays.txt";
     std::ofstream(rays) << "# comment\n\n0 0 0 0 0 -1\n0 0 0 0 0\n";
     fs::path csv = outputDir() / "bad.csv";
-    CHECK(runRtlab({"hits", kScene, "--rays", rays.string(), "-o", csv.string()}) == 1);
+    CHECK(test::runCliStatus({"hits", kScene, "--rays", rays.string(), "-o", csv.string()}) == 1);
     CHECK_THROWS_WITH_AS(readRayFile(rays.string()), doctest::Contains("bad-rays.txt:4: expected 6 or 8 numbers"),
                          Error);
     std::ofstream(rays) << "0 0 0 0 0 -1 0 zz\n";
@@ -120,7 +110,7 @@ TEST_CASE("rtlab render: image and AOV files, sizes from the camera's aspect") {
     fs::path out = outputDir() / "spheres.png";
     fs::path aovDir = outputDir() / "aovs";
     fs::create_directories(aovDir);
-    REQUIRE(runRtlab({"render", kScene, "-o", out.string(), "--linear16", "--width", "64", "--threads", "3", "--aov", "normal",
+    REQUIRE(test::runCliStatus({"render", kScene, "-o", out.string(), "--linear16", "--width", "64", "--threads", "3", "--aov", "normal",
                    "--aov", "cost", "--aov", "depth", "--aov-dir", aovDir.string()}) == 0);
     Image image = readImage(out.string());
     CHECK(image.width == 64);
@@ -132,7 +122,7 @@ TEST_CASE("rtlab render: image and AOV files, sizes from the camera's aspect") {
         CHECK(fs::exists(aovDir / ("spheres." + std::string(aov) + ".png")));
 
     fs::path exr = outputDir() / "spheres.exr";
-    REQUIRE(runRtlab({"render", kScene, "-o", exr.string(), "--width", "64", "--accel", "brute"}) == 0);
+    REQUIRE(test::runCliStatus({"render", kScene, "-o", exr.string(), "--width", "64", "--accel", "brute"}) == 0);
     Image linear = readImage(exr.string());
     // The PNG holds the same radiance, quantised.
     for (size_t i = 0; i < image.pixels.size(); ++i)
@@ -140,11 +130,11 @@ TEST_CASE("rtlab render: image and AOV files, sizes from the camera's aspect") {
 }
 
 TEST_CASE("rtlab render: bad outputs fail before rendering, with exit code 1") {
-    CHECK(runRtlab({"render", kScene, "-o", (outputDir() / "missing" / "x.png").string()}) == 1);
-    CHECK(runRtlab({"render", kScene, "-o", (outputDir() / "x.tif").string()}) == 1);
-    CHECK(runRtlab({"render", kScene, "-o", (outputDir() / "x.png").string(), "--linear16", "--exposure", "2"}) == 1);
-    CHECK(runRtlab({"render", kScene, "-o", (outputDir() / "x.exr").string(), "--exposure", "2"}) == 1);
-    CHECK(runRtlab({"render", kScene, "-o", (outputDir() / "x.png").string(), "--accel", "kd-magic"}) == 1);
-    CHECK(runRtlab({"render", kScene, "-o", (outputDir() / "x.png").string(), "--aov", "albedo"}) == 2);
+    CHECK(test::runCliStatus({"render", kScene, "-o", (outputDir() / "missing" / "x.png").string()}) == 1);
+    CHECK(test::runCliStatus({"render", kScene, "-o", (outputDir() / "x.tif").string()}) == 1);
+    CHECK(test::runCliStatus({"render", kScene, "-o", (outputDir() / "x.png").string(), "--linear16", "--exposure", "2"}) == 1);
+    CHECK(test::runCliStatus({"render", kScene, "-o", (outputDir() / "x.exr").string(), "--exposure", "2"}) == 1);
+    CHECK(test::runCliStatus({"render", kScene, "-o", (outputDir() / "x.png").string(), "--accel", "kd-magic"}) == 1);
+    CHECK(test::runCliStatus({"render", kScene, "-o", (outputDir() / "x.png").string(), "--aov", "albedo"}) == 2);
     CHECK_FALSE(fs::exists(outputDir() / "x.png"));
 }

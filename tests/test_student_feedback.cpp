@@ -12,6 +12,8 @@
 #include "framework/scene/gltf_loader.h"
 #include "grader/grading_report.h"
 #include "grader/rubric.h"
+#include "tests/cli_runner.h"
+#include "tests/output_dirs.h"
 
 #include <OpenImageIO/imageio.h>
 #include <doctest/doctest.h>
@@ -27,18 +29,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path outputDir() {
-    fs::path dir = fs::path(RTLAB_BINARY_DIR) / "test-output" / "student_feedback";
-    fs::create_directories(dir);
-    return dir;
-}
-
-int runRtlab(std::vector<std::string> args) {
-    args.insert(args.begin(), "rtlab");
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    return cli::run(static_cast<int>(argv.size()), argv.data());
-}
+fs::path outputDir() { return test::outputDir("student_feedback"); }
 
 std::string readFile(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
@@ -212,8 +203,8 @@ TEST_CASE("heat map: both images are quantised to 16-bit codes first, so differe
 TEST_CASE("rtlab render: an 8-bit sRGB PNG at the references' size by default, 16-bit linear with --linear16") {
     const std::string scene = std::string(RTLAB_SOURCE_DIR) + "/scenes/cornell-box.gltf";
     fs::path viewing = outputDir() / "view.png", linear = outputDir() / "linear.png";
-    REQUIRE(runRtlab({"render", scene, "-o", viewing.string(), "--threads", "2"}) == 0);
-    REQUIRE(runRtlab({"render", scene, "-o", linear.string(), "--linear16", "--threads", "2"}) == 0);
+    REQUIRE(test::runCliStatus({"render", scene, "-o", viewing.string(), "--threads", "2"}) == 0);
+    REQUIRE(test::runCliStatus({"render", scene, "-o", linear.string(), "--linear16", "--threads", "2"}) == 0);
     auto format = [](const fs::path& path) {
         auto input = OIIO::ImageInput::open(path.string());
         REQUIRE(input);
@@ -227,15 +218,15 @@ TEST_CASE("rtlab render: an 8-bit sRGB PNG at the references' size by default, 1
     // The 16-bit one compares with the committed reference as it is; the 8-bit one is refused
     // with the flag to use, and so is a render of another size, with the size to use.
     const std::string reference = std::string(RTLAB_SOURCE_DIR) + "/scenes/refs/cornell-box.png";
-    CHECK(runRtlab({"compare", linear.string(), reference}) == 0);
+    CHECK(test::runCliStatus({"compare", linear.string(), reference}) == 0);
     CHECK_THROWS_WITH_AS(compareImages(viewing.string(), reference), doctest::Contains("--linear16"), Error);
     CHECK_THROWS_WITH_AS(compareImages(viewing.string(), reference), doctest::Contains("view.png"), Error);
-    CHECK(runRtlab({"compare", viewing.string(), reference}) == 1);
+    CHECK(test::runCliStatus({"compare", viewing.string(), reference}) == 1);
     fs::path large = outputDir() / "large.png";
-    REQUIRE(runRtlab({"render", scene, "-o", large.string(), "--linear16", "--width", "64", "--threads", "2"}) == 0);
+    REQUIRE(test::runCliStatus({"render", scene, "-o", large.string(), "--linear16", "--width", "64", "--threads", "2"}) == 0);
     CHECK_THROWS_WITH_AS(compareImages(large.string(), reference), doctest::Contains("--width 320 --height 240"), Error);
-    CHECK(runRtlab({"render", scene, "-o", (outputDir() / "x.exr").string(), "--linear16"}) == 1);
-    CHECK(runRtlab({"render", scene, "-o", (outputDir() / "x.png").string(), "--linear16", "--srgb8"}) == 1);
+    CHECK(test::runCliStatus({"render", scene, "-o", (outputDir() / "x.exr").string(), "--linear16"}) == 1);
+    CHECK(test::runCliStatus({"render", scene, "-o", (outputDir() / "x.png").string(), "--linear16", "--srgb8"}) == 1);
 }
 
 namespace {

@@ -1,6 +1,5 @@
 #include "framework/blender/blender_process.h"
 
-#include "framework/core/error.h"
 #include "framework/external/external_process.h"
 
 #include <cstdlib>
@@ -42,16 +41,7 @@ void runBlenderOrThrow(const std::vector<std::string>& arguments, TemporaryDirec
 
 std::string blenderVersion() {
     // Asked once per process: the installed Blender does not change while we run.
-    static const std::string version = [] {
-        TemporaryDirectory work("rtlab-blender-version");
-        fs::path logPath = work.path() / "version.txt";
-        runExternal(blenderProgram(), {"--version"}, work.path(), logPath, 120.0, kInstallHint);
-        std::ifstream in(logPath);
-        std::string line;
-        while (std::getline(in, line))
-            if (line.rfind("Blender ", 0) == 0) return line;
-        throw Error(blenderProgram() + " --version printed no 'Blender <version>' line");
-    }();
+    static const std::string version = externalVersion(blenderProgram(), "Blender", 120.0, kInstallHint);
     return version;
 }
 

@@ -11,6 +11,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cstring>
+#include <fstream>
 #include <sstream>
 #include <thread>
 
@@ -92,6 +93,18 @@ void runExternalOrThrow(const std::string& program, const std::vector<std::strin
     std::string reason = errorLine(logPath);
     throw Error(program + " failed (exit " + std::to_string(run.exitStatus) + ") " + what +
                 (reason.empty() ? "" : ": " + reason) + "; log: " + logPath.string());
+}
+
+std::string externalVersion(const std::string& program, const std::string& name, double timeLimitSeconds,
+                            const std::string& hint) {
+    TemporaryDirectory work("rtlab-version");
+    fs::path logPath = work.path() / "version.txt";
+    runExternal(program, {"--version"}, work.path(), logPath, timeLimitSeconds, hint);
+    std::ifstream in(logPath);
+    std::string line;
+    while (std::getline(in, line))
+        if (line.rfind(name + " ", 0) == 0) return line;
+    throw Error(program + " --version printed no '" + name + " <version>' line");
 }
 
 std::string secondsText(double seconds) {

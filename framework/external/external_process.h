@@ -40,6 +40,12 @@ void runExternalOrThrow(const std::string& program, const std::vector<std::strin
                         const std::string& logName, double timeLimitSeconds, const std::string& hint,
                         const std::string& what, const ErrorLineFinder& errorLine);
 
+// What `program --version` says of itself: the first line it prints that starts with `name`
+// and a space. Throws rtlab::Error with one line when it cannot be started or prints no such
+// line.
+std::string externalVersion(const std::string& program, const std::string& name, double timeLimitSeconds,
+                            const std::string& hint);
+
 // A time limit as people write it: 600, 0.5.
 std::string secondsText(double seconds);
 

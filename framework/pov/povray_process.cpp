@@ -1,6 +1,5 @@
 #include "framework/pov/povray_process.h"
 
-#include "framework/core/error.h"
 #include "framework/external/external_process.h"
 
 #include <fstream>
@@ -33,16 +32,7 @@ void runPovrayOrThrow(const std::vector<std::string>& arguments, TemporaryDirect
 
 std::string povrayVersion() {
     // Asked once per process: the installed POV-Ray does not change while we run.
-    static const std::string version = [] {
-        TemporaryDirectory work("rtlab-povray-version");
-        fs::path logPath = work.path() / "version.txt";
-        runExternal("povray", {"--version"}, work.path(), logPath, kPovrayTimeLimitSeconds, kInstallHint);
-        std::ifstream in(logPath);
-        std::string line;
-        while (std::getline(in, line))
-            if (line.rfind("POV-Ray ", 0) == 0) return line;
-        throw Error("povray --version printed no 'POV-Ray <version>' line");
-    }();
+    static const std::string version = externalVersion("povray", "POV-Ray", kPovrayTimeLimitSeconds, kInstallHint);
     return version;
 }
 

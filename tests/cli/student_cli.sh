@@ -11,27 +11,7 @@ student=$build/rtlab
 scene=$source/scenes/cornell-box.gltf
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-failures=0
-
-fail() {
-    echo "FAIL: $1"
-    sed 's/^/    /' "$work/stderr" | head -5
-    failures=$((failures + 1))
-}
-
-# run CODE DESCRIPTION COMMAND...: runs COMMAND and checks its exit code; keeps stdout, stderr.
-run() {
-    local code=$1 description=$2
-    shift 2
-    "$@" > "$work/stdout" 2> "$work/stderr"
-    local actual=$?
-    [ "$actual" -eq "$code" ] || fail "$description: exit $actual, expected $code ($*)"
-}
-
-# one_line TEXT DESCRIPTION: stderr is one line containing TEXT.
-one_line() {
-    [ "$(wc -l < "$work/stderr")" -eq 1 ] && grep -qF -- "$1" "$work/stderr" || fail "$2: expected one line naming '$1'"
-}
+. "$source/tests/cli/exit_checks.sh"
 
 run 2 "unknown command" "$solution" frobnicate
 one_line "unknown command 'frobnicate'" "unknown command"

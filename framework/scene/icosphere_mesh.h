@@ -1,7 +1,8 @@
-// A closed test mesh shared by the test files: an icosahedron subdivided `levels` times, its
-// vertices on the unit sphere, indexed so that neighbouring triangles share bit-identical
-// vertices (docs/conventions.md#stress-catalogue, TRI-04). Two levels give 162 vertices and
-// 320 triangles.
+// A closed test mesh, for the grader's scenes and the framework's tests: an icosahedron
+// subdivided `levels` times, its vertices on the unit sphere, indexed so that neighbouring
+// triangles share bit-identical vertices (docs/conventions.md#stress-catalogue, TRI-04). Two
+// levels give 162 vertices and 320 triangles. Header-only: the a0 stress test built with FMA
+// links nothing of the framework.
 #pragma once
 
 #include "framework/core/vec.h"
@@ -13,14 +14,14 @@
 #include <map>
 #include <vector>
 
-namespace rtlab::testing {
+namespace rtlab {
 
 struct IndexedMesh {
     std::vector<Vec3> positions;
     std::vector<std::array<uint32_t, 3>> triangles;
 };
 
-inline IndexedMesh icosphere(int levels) {
+inline IndexedMesh icosphereMesh(int levels) {
     const float g = (1.0f + std::sqrt(5.0f)) / 2.0f;
     IndexedMesh mesh;
     mesh.positions = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
@@ -47,4 +48,4 @@ inline IndexedMesh icosphere(int levels) {
     return mesh;
 }
 
-}  // namespace rtlab::testing
+}  // namespace rtlab
