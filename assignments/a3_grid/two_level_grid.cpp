@@ -2,9 +2,9 @@
 //                                                  Guide: docs/a3-grid.md#beyond-the-lecture-two-level-grids
 //
 // Contract (framework/interface/a3_grid.h, framework/interface/grid.h):
-//   * buildTwoLevelGrid: the top grid as for the uniform grid (gridFrame, fillGridCells); then
-//     for every top cell with more than refineAbove primitives a child grid,
-//     gridFrameOver(the cell's box shrunk to its primitives' bounds, their count, options),
+//   * buildTwoLevelGrid: the top grid as for the uniform grid with the options `top`
+//     (gridFrame, fillGridCells); then for every top cell with more than refineAbove primitives
+//     a child grid, gridFrameOver(the cell's box shrunk to its primitives' bounds, their count, child),
 //     filled with those primitives (fillGridCells numbers them 0..n-1: map them back to scene
 //     ids), and childOf[cell] = its index in children (kNoChild elsewhere).
 //   * intersectTwoLevelGrid / occludedTwoLevelGrid: walk the top grid as intersectGrid does;
@@ -17,8 +17,9 @@
 
 namespace rtlab {
 
-TwoLevelGrid buildTwoLevelGrid(std::span<const Bounds3f> primBounds, const GridOptions& options, uint32_t refineAbove) {
-    (void)primBounds, (void)options, (void)refineAbove;
+TwoLevelGrid buildTwoLevelGrid(std::span<const Bounds3f> primBounds, const GridOptions& top, const GridOptions& child,
+                               uint32_t refineAbove) {
+    (void)primBounds, (void)top, (void)child, (void)refineAbove;
     throw NotImplemented("a3 buildTwoLevelGrid (assignments/a3_grid/two_level_grid.cpp)");
 }
 

@@ -65,9 +65,11 @@ bool occludedGrid(const UniformGrid& grid, Traversal& traversal);
 
 // --- Beyond the lecture (assignments/a3_grid/two_level_grid.cpp; optional, not graded) --------
 
-// A top cell with more than refineAbove primitives gets a child grid over the cell's box (shrunk
-// to its primitives' bounds) by gridResolution's rule for those primitives alone.
-TwoLevelGrid buildTwoLevelGrid(std::span<const Bounds3f> primBounds, const GridOptions& options, uint32_t refineAbove);
+// The top grid by gridResolution's rule with `top`; a top cell with more than refineAbove
+// primitives gets a child grid over the cell's box (shrunk to its primitives' bounds) by the
+// same rule with `child`, for those primitives alone.
+TwoLevelGrid buildTwoLevelGrid(std::span<const Bounds3f> primBounds, const GridOptions& top, const GridOptions& child,
+                               uint32_t refineAbove);
 bool intersectTwoLevelGrid(const TwoLevelGrid& grid, Traversal& traversal, Hit& hit);
 bool occludedTwoLevelGrid(const TwoLevelGrid& grid, Traversal& traversal);
 

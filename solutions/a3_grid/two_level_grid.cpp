@@ -69,9 +69,10 @@ bool query(const TwoLevelGrid& grid, Traversal& traversal, Hit* hit) {
 
 }  // namespace
 
-TwoLevelGrid buildTwoLevelGrid(std::span<const Bounds3f> primBounds, const GridOptions& options, uint32_t refineAbove) {
+TwoLevelGrid buildTwoLevelGrid(std::span<const Bounds3f> primBounds, const GridOptions& top, const GridOptions& child,
+                               uint32_t refineAbove) {
     TwoLevelGrid grid;
-    grid.top = gridFrame(primBounds, options);
+    grid.top = gridFrame(primBounds, top);
     fillGridCells(grid.top, primBounds);
     grid.childOf.assign(grid.top.cellCount(), TwoLevelGrid::kNoChild);
     for (int z = 0; z < grid.top.resolution[2]; ++z)
@@ -87,11 +88,11 @@ TwoLevelGrid buildTwoLevelGrid(std::span<const Bounds3f> primBounds, const GridO
                     boxes.push_back(primBounds[prim]);
                     reach.extend(primBounds[prim]);
                 }
-                UniformGrid child = gridFrameOver(overlap(cellBox(grid.top, {x, y, z}), reach), prims.size(), options);
-                fillGridCells(child, boxes);
-                for (uint32_t& local : child.primIndices) local = prims[local];  // back to scene ids
+                UniformGrid sub = gridFrameOver(overlap(cellBox(grid.top, {x, y, z}), reach), prims.size(), child);
+                fillGridCells(sub, boxes);
+                for (uint32_t& local : sub.primIndices) local = prims[local];  // back to scene ids
                 grid.childOf[cell] = static_cast<uint32_t>(grid.children.size());
-                grid.children.push_back(std::move(child));
+                grid.children.push_back(std::move(sub));
             }
     return grid;
 }

@@ -7,7 +7,7 @@ namespace rtlab {
 
 void TwoLevelGridAccelerator::build(const PrimitiveSet& primitives) {
     primitives_ = &primitives;
-    grid_ = buildTwoLevelGrid(primitives.allBounds(), options_, refineAbove_);
+    grid_ = buildTwoLevelGrid(primitives.allBounds(), top_, child_, refineAbove_);
 }
 
 Hit TwoLevelGridAccelerator::intersect(const Ray& ray, TraversalStats& stats) const {
@@ -67,14 +67,18 @@ StructureView TwoLevelGridAccelerator::structure() const {
 AcceleratorType twoLevelGridType() {
     return {"grid2",
             "two-level grid: crowded cells refined by their own grid (a3, beyond the lecture)",
-            {{"C", "cells per primitive at both levels", "27", 1, 1000, false, {}},
+            // The top grid only has to find the crowded regions: a coarse one leaves fewer empty
+            // cells to step through around them (docs/a3-grid.md#beyond-the-lecture-two-level-grids).
+            {{"top", "cells per primitive of the top grid", "3", 1, 1000, false, {}},
+             {"C", "cells per primitive of each child grid", "27", 1, 1000, false, {}},
              {"res", "most cells along any axis of either level", "64", 1, 1024, true, {}},
              {"refine", "a top cell with more primitives than this gets a child grid", "8", 1, 1000000, true, {}}},
             [](const AcceleratorParameters& p) {
-                GridOptions options;
-                options.cellsPerPrimitive = p.number("C");
-                options.maxResolution = p.integer("res");
-                return std::make_unique<TwoLevelGridAccelerator>(options, static_cast<uint32_t>(p.integer("refine")));
+                GridOptions top, child;
+                top.cellsPerPrimitive = p.number("top");
+                child.cellsPerPrimitive = p.number("C");
+                top.maxResolution = child.maxResolution = p.integer("res");
+                return std::make_unique<TwoLevelGridAccelerator>(top, child, static_cast<uint32_t>(p.integer("refine")));
             },
             {"grid2"}};
 }

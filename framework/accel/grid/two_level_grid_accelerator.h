@@ -8,7 +8,8 @@ namespace rtlab {
 
 class TwoLevelGridAccelerator final : public Accelerator {
 public:
-    TwoLevelGridAccelerator(const GridOptions& options, uint32_t refineAbove) : options_(options), refineAbove_(refineAbove) {}
+    TwoLevelGridAccelerator(const GridOptions& top, const GridOptions& child, uint32_t refineAbove)
+        : top_(top), child_(child), refineAbove_(refineAbove) {}
 
     void build(const PrimitiveSet& primitives) override;
     Hit intersect(const Ray& ray, TraversalStats& stats) const override;
@@ -18,7 +19,7 @@ public:
     size_t memoryBytes() const override;
 
 private:
-    GridOptions options_;
+    GridOptions top_, child_;
     uint32_t refineAbove_;
     const PrimitiveSet* primitives_ = nullptr;
     TwoLevelGrid grid_;
