@@ -41,8 +41,7 @@ RenderRaceResult runRenderRace(const RenderRaceOptions& options) {
     RenderRaceResult result;
     result.options = options;
     result.loadAverage = loadAverage();
-    const AcceleratorType* fastest = fastestAcceleratorType();
-    result.accelerator = fastest ? fastest->name : AcceleratorSpec().name;
+    result.accelerator = defaultRenderAccelerator();
     AcceleratorSpec spec;
     spec.name = result.accelerator;
     PrimitiveSet primitives(scene);

@@ -1,6 +1,7 @@
 // rtlab render SCENE -o OUT: renders a glTF scene with the chosen accelerator
 // (docs/rendering.md) and prints one summary line: time, throughput, work per ray.
 #include "framework/accel/accelerator.h"
+#include "framework/accel/accelerator_registry.h"
 #include "cli/accelerator_options.h"
 #include "cli/commands.h"
 #include "cli/render_accelerator.h"
@@ -9,7 +10,6 @@
 #include "framework/render/image_io.h"
 #include "framework/render/renderer.h"
 #include "framework/render/trace_share.h"
-#include "framework/accel/accelerator_registry.h"
 #include "framework/render/tiles.h"
 #include "framework/scene/gltf_loader.h"
 
@@ -160,7 +160,7 @@ void addRenderCommand(CLI::App& app) {
         ->check(CLI::Range(1, 1 << 15));
     command->add_option("--camera", options->cameraName, "Camera by name (default: the first)");
     // With fast/ linked in (rtlab-solution), the fastest structure renders unless --accel says otherwise.
-    if (const AcceleratorType* fastest = fastestAcceleratorType()) options->accelerator.name = fastest->name;
+    options->accelerator.name = defaultRenderAccelerator();
     addAcceleratorOptions(command, options->accelerator, "Accelerator");
     // Whether --accel was given decides whether an a2 stub may fall back to bvh-median.
     CLI::Option* accel = command->get_option("--accel");

@@ -140,6 +140,11 @@ const AcceleratorType* fastestAcceleratorType() {
     return fastest;
 }
 
+std::string defaultRenderAccelerator() {
+    const AcceleratorType* fastest = fastestAcceleratorType();
+    return fastest ? fastest->name : AcceleratorSpec().name;
+}
+
 std::vector<AcceleratorOption> bvhTreeOptions() {
     return {
         {"split", "split rule: a1's median, middle, equal (counts), a2's sah (full sweep), buckets", "buckets", 0, 0, false,

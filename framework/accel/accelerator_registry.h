@@ -71,6 +71,8 @@ std::vector<const AcceleratorType*> acceleratorTypes();
 // The structure with the highest speedRank above 0, or nullptr when this executable has none
 // (the student's rtlab, which leaves fast/ out).
 const AcceleratorType* fastestAcceleratorType();
+// What renders without --accel: the fastest structure, else AcceleratorSpec's default.
+std::string defaultRenderAccelerator();
 
 // The option lists of the binary BVH, shared with the other traversals of the same tree.
 std::vector<AcceleratorOption> bvhTreeOptions();
