@@ -9,11 +9,12 @@
 #include "framework/scene/gltf_loader.h"
 #include "framework/scene/icosphere_mesh.h"
 
+#include "tests/fetched_models.h"
+
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <limits>
 #include <map>
 #include <set>
@@ -509,11 +510,8 @@ TEST_CASE("every accelerator matches the oracle on the bunny and the engine") {
     for (const AcceleratorCase& c : allAccelerators())
         if (c.spec.maxLeaf == 4) accelerators.push_back(c);
     for (const char* file : {"bunny.gltf", "engine.glb"}) {
-        std::string path = std::string(RTLAB_BINARY_DIR) + "/models/" + file;
-        REQUIRE_MESSAGE(std::filesystem::exists(path),
-                        path << " is missing: run scripts/fetch-models " << RTLAB_BINARY_DIR << "/models");
         CAPTURE(file);
-        Scene scene = loadGltf(path);
+        Scene scene = loadFetchedModel(file);
         RaySet set;
         addCameraRays(set, scene, 16, 12);
         addRandomRays(set, scene, 200, 11);

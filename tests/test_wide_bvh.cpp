@@ -5,12 +5,11 @@
 #include "framework/accel/accelerator.h"
 #include "framework/accel/bvh_accelerator.h"
 #include "framework/scene/benchmark_rays.h"
-#include "framework/scene/gltf_loader.h"
+#include "tests/fetched_models.h"
 
 #include <doctest/doctest.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <limits>
 #include <string>
 #include <type_traits>
@@ -19,13 +18,6 @@
 using namespace rtlab;
 
 namespace {
-
-Scene loadModel(const char* file) {
-    std::string path = std::string(RTLAB_BINARY_DIR) + "/models/" + file;
-    REQUIRE_MESSAGE(std::filesystem::exists(path),
-                    path << " is missing: run scripts/fetch-models " << RTLAB_BINARY_DIR << "/models");
-    return loadGltf(path);
-}
 
 std::unique_ptr<Accelerator> built(const std::string& name, const PrimitiveSet& prims, int maxLeaf = 4) {
     AcceleratorSpec spec;
@@ -41,7 +33,7 @@ std::unique_ptr<Accelerator> built(const std::string& name, const PrimitiveSet& 
 TEST_CASE_TEMPLATE("collapsing keeps every leaf of the binary tree and fills every node it can", Width,
                    std::integral_constant<int, 4>, std::integral_constant<int, 8>) {
     constexpr int W = Width::value;
-    Scene scene = loadModel("bunny.gltf");
+    Scene scene = loadFetchedModel("bunny.gltf");
     PrimitiveSet prims(scene);
     auto binary = built("bvh-buckets:12", prims);
     const Bvh& bvh = dynamic_cast<const BvhAccelerator&>(*binary).bvh();
@@ -88,7 +80,7 @@ TEST_CASE_TEMPLATE("a one-leaf tree gives a root with one leaf child", Width, st
 TEST_CASE("the wide traversal finds exactly the binary traversal's hits, with fewer node visits") {
     for (const char* file : {"bunny.gltf", "engine.glb"}) {
         CAPTURE(file);
-        Scene scene = loadModel(file);
+        Scene scene = loadFetchedModel(file);
         PrimitiveSet prims(scene);
         // Leaves of up to 8 primitives fill two triangle packets.
         for (auto [method, maxLeaf] : {std::pair{"4-sah", 4}, {"4-buckets:12", 4}, {"4-median", 8}, {"8-sah", 4},
@@ -147,7 +139,7 @@ TEST_CASE("of equally near triangles, the wide traversal keeps the one the binar
 }
 
 TEST_CASE("the wide traversal survives rays with NaN or infinite parts, and hits nothing") {
-    Scene scene = loadModel("bunny.gltf");
+    Scene scene = loadFetchedModel("bunny.gltf");
     PrimitiveSet prims(scene);
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = kInfinity;
     const Ray rays[] = {Ray{Vec3(nan, 1.0f, 20.0f), Vec3(0.0f, 0.0f, -1.0f)},

@@ -13,11 +13,12 @@ struct ParsedName {
     std::string options;  // "k=v,k=v"
 };
 
-// True for a name shaped like a wide BVH's ("bvh" and a width, e.g. "bvh4"): a fast path this
-// executable may have been linked without.
-bool isWideBvhName(std::string_view name) {
-    return name.size() > 3 && name.starts_with("bvh") &&
-           std::all_of(name.begin() + 3, name.end(), [](char c) { return c >= '0' && c <= '9'; });
+// True for the name of a structure of fast/, which this executable may have been linked
+// without: a wide BVH ("bvh" and a width, e.g. "bvh4") or the tuned grid.
+bool isFastPathName(std::string_view name) {
+    bool wideBvh = name.size() > 3 && name.starts_with("bvh") &&
+                   std::all_of(name.begin() + 3, name.end(), [](char c) { return c >= '0' && c <= '9'; });
+    return wideBvh || name == "fastgrid";
 }
 
 ParsedName parseName(const std::string& name) {
@@ -39,8 +40,8 @@ ParsedName parseName(const std::string& name) {
             base = typeName;
         }
     }
-    if (!parsed.type && isWideBvhName(base))
-        throw Error("--accel " + name + ": the wide BVHs are fast paths, built only into rtlab-solution and the benchmarks");
+    if (!parsed.type && isFastPathName(base))
+        throw Error("--accel " + name + ": " + base + " is a fast path of fast/, built only into rtlab-solution and the benchmarks");
     if (!parsed.type) {
         std::string names;
         for (const AcceleratorType* type : acceleratorTypes()) names += (names.empty() ? "" : ", ") + type->name;

@@ -44,6 +44,8 @@ one_line "bvh4-sah" "recursive traversal of the wide BVH"
 # The student binary does not link the fast paths (fast/): their names say where they are.
 run 1 "a wide BVH in the student binary" "$student" render "$scene" -o "$work/x.png" --accel bvh4-sah
 one_line "only into rtlab-solution" "a wide BVH in the student binary"
+run 1 "the tuned grid in the student binary" "$student" render "$scene" -o "$work/x.png" --accel fastgrid
+one_line "fastgrid is a fast path of fast/" "the tuned grid in the student binary"
 run 1 "an option value out of its range" "$solution" render "$scene" -o "$work/x.png" --accel grid:C=0
 one_line "C must be a number in 1..1000" "an option value out of its range"
 run 1 "an option the structure does not have" "$solution" render "$scene" -o "$work/x.png" --accel grid:B=12
@@ -52,6 +54,7 @@ run 0 "rtlab render --help" "$student" render --help
 grep -q "bvh4" "$work/stdout" && fail "rtlab render --help offers bvh4"
 run 0 "rtlab-solution render --help" "$solution" render --help
 grep -q "bvh4:" "$work/stdout" || fail "rtlab-solution render --help lacks bvh4"
+grep -q "fastgrid:" "$work/stdout" || fail "rtlab-solution render --help lacks fastgrid"
 
 release_dir=$work/release-into
 mkdir "$release_dir"

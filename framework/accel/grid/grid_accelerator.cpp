@@ -2,6 +2,7 @@
 
 #include "framework/accel/accelerator_registry.h"
 #include "framework/accel/grid/grid_exact_insertion.h"
+#include "framework/accel/grid/grid_structure_view.h"
 #include "framework/interface/a3_grid.h"
 
 namespace rtlab {
@@ -28,25 +29,7 @@ bool GridAccelerator::occluded(const Ray& ray, TraversalStats& stats) const {
 }
 
 StructureView GridAccelerator::structure() const {
-    StructureView view;
-    view.primIndices = grid_.primIndices;
-    StructureNode root;
-    root.bounds = grid_.bounds;
-    root.firstChild = 0;
-    root.childCount = static_cast<uint32_t>(grid_.cellCount());
-    view.nodes.push_back(root);
-    for (int z = 0; z < grid_.resolution[2]; ++z)
-        for (int y = 0; y < grid_.resolution[1]; ++y)
-            for (int x = 0; x < grid_.resolution[0]; ++x) {
-                size_t c = grid_.cellIndex({x, y, z});
-                StructureNode cell;
-                cell.bounds = gridCellBox(grid_, {x, y, z});
-                cell.firstPrim = grid_.cellStart[c];
-                cell.primCount = grid_.cellStart[c + 1] - grid_.cellStart[c];
-                view.children.push_back(static_cast<uint32_t>(view.nodes.size()));
-                view.nodes.push_back(cell);
-            }
-    return view;
+    return gridStructureView(grid_, grid_.cellStart, grid_.primIndices);
 }
 
 AcceleratorType gridType() {
