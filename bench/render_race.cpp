@@ -74,9 +74,11 @@ void writeRenderRaceMarkdown(std::ostream& out, const RenderRaceResult& result) 
         << "| target | measured | |\n|---|--:|:-:|\n"
         << "| POV-Ray's time / ours ≥ " << format("%.0f", kSpeedupTarget) << " | " << format("%.2f", result.speedup()) << " | "
         << verdict(result.speedup() >= kSpeedupTarget) << " |\n"
-        << "| time beyond tracing ≤ " << format("%.0f", 100 * kBeyondTracingTarget) << " % | "
-        << format("%.1f", 100 * result.share.beyondTracing()) << " % | "
-        << verdict(result.share.beyondTracing() <= kBeyondTracingTarget) << " |\n";
+        << "| time beyond tracing ≤ " << format("%.0f", 100 * kBeyondTracingTarget) << " % (the median of the passes' own shares) | "
+        << format("%.1f", 100 * result.share.pairedBeyondTracing()) << " % | "
+        << verdict(result.share.pairedBeyondTracing() <= kBeyondTracingTarget) << " |\n"
+        << "| the same from the best render and the best replay | " << format("%.1f", 100 * result.share.beyondTracing())
+        << " % | |\n";
 }
 
 }  // namespace rtlab::bench

@@ -16,7 +16,7 @@ struct RenderRaceOptions {
     std::string scene = "bunny";
     std::string modelsDir;
     int size = 784;   // width and height
-    int repeats = 5;  // the best of this many renders, replays and POV-Ray runs counts
+    int repeats = 11;  // the best of this many renders, replays and POV-Ray runs counts
 };
 
 struct RenderRaceResult {

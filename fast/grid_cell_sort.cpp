@@ -169,7 +169,7 @@ GridCells sortIntoCells(const UniformGrid& frame, std::span<const Bounds3f> prim
     // Bits for the largest primitive index and the largest cell index within a layer.
     const int primBits = std::max(1, int(std::bit_width(std::max<size_t>(primBounds.size(), 1) - 1)));
     const int cellBits = int(std::bit_width(layerCells - 1));
-    if (primBits + cellBits <= 32) return dealAndScatter<uint32_t>(frame, boxes, layerCount, primBits);
+    if (primBits < 32 && primBits + cellBits <= 32) return dealAndScatter<uint32_t>(frame, boxes, layerCount, primBits);
     return dealAndScatter<uint64_t>(frame, boxes, layerCount, 32);
 }
 

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 using namespace rtlab;
 
@@ -105,6 +106,19 @@ TEST_CASE("camera: the film set up once gives generateRay's rays bit for bit, by
             Ray inside = film.through(i + 0.125, j + 0.875);
             Ray insideReference = camera.generateRayThrough(i + 0.125, j + 0.875, width, height);
             REQUIRE(std::memcmp(&inside.direction, &insideReference.direction, sizeof(Vec3)) == 0);
+        }
+        // A whole row at once, as the renderer makes a tile's rays: 37 columns are two full
+        // batches of 16 and a part-filled one.
+        std::vector<DVec3> columns;
+        for (int i = 0; i < width; ++i) columns.push_back(film.column(i + 0.5));
+        std::vector<Ray> row(width);
+        film.throughRow(columns.data(), width, film.row(j + 0.5), row.data());
+        for (int i = 0; i < width; ++i) {
+            Ray reference = camera.generateRay(i, j, width, height);
+            REQUIRE(std::memcmp(&row[i].direction, &reference.direction, sizeof(Vec3)) == 0);
+            REQUIRE(row[i].origin == reference.origin);
+            REQUIRE(row[i].tMin == reference.tMin);
+            REQUIRE(row[i].tMax == reference.tMax);
         }
     }
 }

@@ -348,6 +348,30 @@ TEST_CASE("renderer: the trace share replays exactly the render's own accelerato
     CHECK(share.traceSeconds > 0.0);
     CHECK(share.beyondTracing() >= 0.0);
     CHECK(share.beyondTracing() < 1.0);
-    CHECK(TraceShare{2.0, 1.5, 1}.beyondTracing() == doctest::Approx(0.25));
-    CHECK(TraceShare{1.0, 1.5, 1}.beyondTracing() == 0.0);  // a replay slower than the render: none beyond
+    CHECK(TraceShare{2.0, 1.5, 1, {}}.beyondTracing() == doctest::Approx(0.25));
+    CHECK(TraceShare{1.0, 1.5, 1, {}}.beyondTracing() == 0.0);  // a replay slower than the render: none beyond
+    // One share per pass, and their median.
+    CHECK(share.passShares.size() == 2);
+    CHECK(TraceShare{1.0, 0.5, 1, {0.3, 0.1, 0.2}}.pairedBeyondTracing() == doctest::Approx(0.2));
+    CHECK(TraceShare{1.0, 0.5, 1, {0.4, 0.1, 0.2, 0.3}}.pairedBeyondTracing() == doctest::Approx(0.25));
+    CHECK(TraceShare{2.0, 1.5, 1, {}}.pairedBeyondTracing() == doctest::Approx(0.25));  // no passes: the best against the best
+}
+
+TEST_CASE("renderer: the centre-ray path gives the general path's colours, bit for bit") {
+    // A render asking for an AOV takes the general path (sample loop, AOVs); without, one ray
+    // per pixel centre and point lights take renderCentres (an emitter would be an area light:
+    // the general path). The colours must not differ: a smooth-shaded square, a square casting
+    // a shadow on it, two lights.
+    Scene scene;
+    uint32_t grey = addMaterial(scene, Vec3(0.6f));
+    const Vec3 tilted = glm::normalize(Vec3(0.3f, 0.1f, 1.0f));
+    addSquareZ(scene, 0, 0, -3.0f, 10.0f, grey, &tilted);
+    addSquareZ(scene, 1, 0, -2.0f, 0.2f, addMaterial(scene, Vec3(0.2f, 0.7f, 0.4f)));
+    addLight(scene, {1.0f, 0.0f, -1.0f}, 2.0f);
+    addLight(scene, {-1.0f, 0.5f, -1.0f}, 1.0f);
+    RenderResult plain = renderScene(scene, axisCamera(), 48, 32);
+    RenderResult general = renderScene(scene, axisCamera(), 48, 32, 2, {Aov::Depth});
+    REQUIRE(plain.colour.pixels.size() == general.colour.pixels.size());
+    CHECK(std::memcmp(plain.colour.pixels.data(), general.colour.pixels.data(), plain.colour.pixels.size() * sizeof(float)) == 0);
+    CHECK(plain.shadow.rays == general.shadow.rays);
 }

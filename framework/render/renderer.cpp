@@ -71,25 +71,47 @@ public:
           areaLights_(scene),
           reach_(sceneReach(scene)),
           anyAov_(!settings.aovs.empty()),
+          centresOnly_(settings.samplesPerPixel == 1 && areaLights_.empty() && !anyAov_),
           result_(result) {
         centreColumns_.reserve(settings.width);
         for (int x = 0; x < settings.width; ++x) centreColumns_.push_back(film_.column(x + 0.5));
     }
 
     void render(const Tile& tile, TileStats& stats) const {
+        if (centresOnly_)
+            renderCentres(tile, stats);
+        else
+            renderSamples(tile, stats);
+    }
+
+private:
+    // One ray through each pixel centre, point lights only and no AOVs: every POV-Ray reference
+    // and the benchmark's renders. Nothing is done per pixel but its ray, its query and, on a
+    // hit, its shading: no sample loop, no sum to divide, no write for a miss (the image starts
+    // black). The colour is what renderSamples computes for the same pixel, bit for bit.
+    void renderCentres(const Tile& tile, TileStats& stats) const {
+        Ray rays[kTileSize];
+        for (int y = tile.y0; y < tile.y1; ++y) {
+            makeCentreRays(tile, y, rays);
+            for (int x = tile.x0; x < tile.x1; ++x) {
+                const Ray& ray = rays[x - tile.x0];
+                Hit hit = accelerator_.intersect(ray, stats.primary);
+                if (!hit.found()) continue;
+                SurfaceHit surface = scene_.surfaceAt(ray, hit);
+                result_.colour.setRgb(x, y, directLighting(scene_, accelerator_, surface, ray.direction, stats.shadow));
+            }
+        }
+    }
+
+    // Any sample count, area lights and AOVs.
+    void renderSamples(const Tile& tile, TileStats& stats) const {
         const int spp = settings_.samplesPerPixel;
         PixelSamples samples(spp, !areaLights_.empty());
         // At one sample with point lights only no random number is used: none is drawn.
         const bool random = spp > 1 || !areaLights_.empty();
         Ray centreRays[kTileSize];
         for (int y = tile.y0; y < tile.y1; ++y) {
-            // One sample keeps POV-Ray's ray through the pixel centre. The rays of a tile's row
-            // are made together: their square roots and divisions overlap instead of waiting
-            // on each other between two traversals.
-            if (spp == 1) {
-                const DVec3 centreRow = film_.row(y + 0.5);
-                for (int x = tile.x0; x < tile.x1; ++x) centreRays[x - tile.x0] = film_.through(centreColumns_[x], centreRow);
-            }
+            if (spp == 1) makeCentreRays(tile, y, centreRays);
             for (int x = tile.x0; x < tile.x1; ++x) {
                 size_t pixel = static_cast<size_t>(y) * settings_.width + x;
                 if (random) samples.generate(settings_.seed, pixel);
@@ -103,7 +125,11 @@ public:
         }
     }
 
-private:
+    // The rays through the pixel centres of one row of a tile (POV-Ray's rays), made together.
+    void makeCentreRays(const Tile& tile, int y, Ray* rays) const {
+        film_.throughRow(centreColumns_.data() + tile.x0, tile.x1 - tile.x0, film_.row(y + 0.5), rays);
+    }
+
     // The radiance along camera ray number s of pixel (x, y); the first sample fills the AOVs.
     Vec3 radiance(const Ray& ray, const PixelSamples& samples, int s, int x, int y, size_t pixel, TileStats& stats) const {
         // The accelerator counts straight into the tile's totals; the ray's own work is their
@@ -146,6 +172,7 @@ private:
     const AreaLights areaLights_;
     const float reach_;
     const bool anyAov_;
+    const bool centresOnly_;  // renderCentres does the whole render
     RenderResult& result_;
 };
 

@@ -66,8 +66,20 @@ double traceSeconds(const Accelerator& accelerator, const std::vector<Query>& qu
 
 }  // namespace
 
-double TraceShare::beyondTracing() const {
-    return renderSeconds > 0.0 ? std::max(0.0, (renderSeconds - traceSeconds) / renderSeconds) : 0.0;
+namespace {
+
+double shareOf(double render, double trace) { return render > 0.0 ? std::max(0.0, (render - trace) / render) : 0.0; }
+
+}  // namespace
+
+double TraceShare::beyondTracing() const { return shareOf(renderSeconds, traceSeconds); }
+
+double TraceShare::pairedBeyondTracing() const {
+    if (passShares.empty()) return beyondTracing();
+    std::vector<double> shares = passShares;
+    std::sort(shares.begin(), shares.end());
+    size_t middle = shares.size() / 2;
+    return shares.size() % 2 ? shares[middle] : 0.5 * (shares[middle - 1] + shares[middle]);
 }
 
 TraceShare measureTraceShare(const Scene& scene, const Camera& camera, const Accelerator& accelerator,
@@ -87,8 +99,11 @@ TraceShare measureTraceShare(const Scene& scene, const Camera& camera, const Acc
     share.renderSeconds = share.traceSeconds = kInfinity;
     Renderer renderer(scene, camera, accelerator);
     for (int pass = 0; pass < std::max(1, repeats); ++pass) {
-        share.renderSeconds = std::min(share.renderSeconds, renderer.render(settings).seconds);
-        share.traceSeconds = std::min(share.traceSeconds, traceSeconds(accelerator, queries, settings.threads));
+        double render = renderer.render(settings).seconds;
+        double trace = traceSeconds(accelerator, queries, settings.threads);
+        share.renderSeconds = std::min(share.renderSeconds, render);
+        share.traceSeconds = std::min(share.traceSeconds, trace);
+        share.passShares.push_back(shareOf(render, trace));
     }
     return share;
 }

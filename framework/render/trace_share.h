@@ -8,6 +8,7 @@
 #include "framework/render/renderer.h"
 
 #include <cstddef>
+#include <vector>
 
 namespace rtlab {
 
@@ -15,9 +16,14 @@ struct TraceShare {
     double renderSeconds = 0.0;  // the best of the renders
     double traceSeconds = 0.0;   // the best of the replays of the same queries
     size_t queries = 0;          // closest-hit and any-hit queries of one render
+    // (render - replay) / render of each pass, a render and the replay right after it.
+    std::vector<double> passShares;
 
     // The renderer's share of its own time: (render - trace) / render, at least 0.
     double beyondTracing() const;
+    // The median over the passes of their own shares: each render is compared with the replay
+    // that ran next to it, so a stretch of slow machine slows both sides of one pair.
+    double pairedBeyondTracing() const;
 };
 
 // Renders `repeats` times and traces the recorded queries `repeats` times on settings.threads

@@ -12,7 +12,7 @@ namespace rtlab {
 // The camera's film for one image size, set up once: every ray through it costs a few
 // multiply-adds and one normalisation, not a tangent and three normalisations.
 struct CameraFilm {
-    DVec3 origin{0.0};
+    Vec3 origin{0.0f};   // every ray's origin: the camera's position, rounded to float once
     DVec3 forward{0.0};  // D: from the eye to the film's centre
     DVec3 right{0.0};    // R: the film's full width
     DVec3 up{0.0};       // U: the film's full height
@@ -26,11 +26,16 @@ struct CameraFilm {
 
     Ray through(const DVec3& column, const DVec3& row) const {
         Ray ray;
-        ray.origin = Vec3(origin);
+        ray.origin = origin;
         ray.direction = Vec3(glm::normalize(column + row));
         return ray;
     }
     Ray through(double x, double y) const { return through(column(x), row(y)); }
+
+    // through(columns[i], row) for i < count, made together: the same arithmetic, written one
+    // component at a time so that the compiler does the square roots and divisions of several
+    // rays in one instruction. A renderer makes a tile's row of centre rays this way.
+    void throughRow(const DVec3* columns, int count, const DVec3& row, Ray* rays) const;
 };
 
 struct Camera {
