@@ -46,6 +46,9 @@ struct ReferenceRenderer {
     int width = 0;
     int height = 0;
     std::string settings;  // everything else that shapes the image
+    // How far a re-render (--check) may lie from the committed image: the RMS of their
+    // difference over the committed image's mean. 0 demands identical pixels.
+    double recheckTolerance = 0.0;
     // Why a scene gets no reference from this renderer (printed; the scene is skipped), or "".
     std::function<std::string(const Scene&)> skipReason;
     std::function<void(const Scene&, const Camera&, const std::filesystem::path& image)> render;
