@@ -6,13 +6,16 @@
 #include "framework/core/pcg32.h"
 #include "framework/render/renderer.h"
 #include "framework/render/trace_share.h"
+#include "framework/scene/icosphere_mesh.h"
 
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <numbers>
+#include <vector>
 
 using namespace rtlab;
 
@@ -374,4 +377,97 @@ TEST_CASE("renderer: the centre-ray path gives the general path's colours, bit f
     REQUIRE(plain.colour.pixels.size() == general.colour.pixels.size());
     CHECK(std::memcmp(plain.colour.pixels.data(), general.colour.pixels.data(), plain.colour.pixels.size() * sizeof(float)) == 0);
     CHECK(plain.shadow.rays == general.shadow.rays);
+}
+
+namespace {
+
+// Every shadow ray a render asks its accelerator about, as the bits of its origin, direction
+// and interval, in sorted order (the batched path asks in another order).
+class ShadowRayRecorder : public Accelerator {
+public:
+    explicit ShadowRayRecorder(const Accelerator& inner) : inner_(inner) {}
+    void build(const PrimitiveSet&) override {}
+    Hit intersect(const Ray& ray, TraversalStats& stats) const override { return inner_.intersect(ray, stats); }
+    bool occluded(const Ray& ray, TraversalStats& stats) const override {
+        std::array<float, 8> values{ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x,
+                                    ray.direction.y, ray.direction.z, ray.tMin, ray.tMax};
+        std::array<uint32_t, 8> bits;
+        std::memcpy(bits.data(), values.data(), sizeof bits);
+        rays_.push_back(bits);
+        return inner_.occluded(ray, stats);
+    }
+    StructureView structure() const override { return inner_.structure(); }
+    size_t memoryBytes() const override { return 0; }
+
+    std::vector<std::array<uint32_t, 8>> sortedRays() const {
+        auto sorted = rays_;
+        std::sort(sorted.begin(), sorted.end());
+        return sorted;
+    }
+
+private:
+    const Accelerator& inner_;
+    mutable std::vector<std::array<uint32_t, 8>> rays_;
+};
+
+std::vector<std::array<uint32_t, 8>> shadowRaysOf(const Scene& scene, int width, int height, std::vector<Aov> aovs) {
+    PrimitiveSet primitives(scene);
+    auto accelerator = makeAccelerator({.name = "brute"});
+    accelerator->build(primitives);
+    ShadowRayRecorder recorder(*accelerator);
+    RenderSettings settings;
+    settings.width = width;
+    settings.height = height;
+    settings.threads = 1;
+    settings.aovs = std::move(aovs);
+    settings.progress = false;
+    Renderer(scene, axisCamera(), recorder).render(settings);
+    return recorder.sortedRays();
+}
+
+}  // namespace
+
+TEST_CASE("renderer: the batched shading of the centre-ray path is directLighting's, bit for bit, on every kind of hit") {
+    // PointLightBatch shades a smooth mesh whose normals vary from vertex to vertex, flat floor
+    // triangles (whole rows of hits: batches that fill up), a tilted flat triangle and a
+    // degenerate one; it hands
+    // spheres and black surfaces back to directLighting. Three lights, one of them behind the
+    // floor; an image whose size is no multiple of the tile size.
+    Scene scene;
+    const uint32_t grey = addMaterial(scene, Vec3(0.6f, 0.5f, 0.4f));
+    IndexedMesh ball = icosphereMesh(2);
+    const auto base = static_cast<uint32_t>(scene.triangles.positions.size());
+    for (const Vec3& p : ball.positions) {
+        scene.triangles.positions.push_back(Vec3(0.0f, 0.0f, -4.0f) + 0.9f * p);
+        scene.triangles.normals.push_back(p);
+    }
+    for (const auto& t : ball.triangles) {
+        scene.triangles.indices.push_back({base + t[0], base + t[1], base + t[2]});
+        scene.triangles.material.push_back(grey);
+        scene.triangles.smooth.push_back(1);
+    }
+    addSquareZ(scene, 0, 0, -6.0f, 8.0f, addMaterial(scene, Vec3(0.3f, 0.7f, 0.5f)));
+    addSquareZ(scene, -1.2f, 0.8f, -3.5f, 0.3f, addMaterial(scene, Vec3(0.0f)));  // black
+    auto addFlatTriangle = [&](std::array<Vec3, 3> corners) {
+        const auto first = static_cast<uint32_t>(scene.triangles.positions.size());
+        for (const Vec3& c : corners) scene.triangles.positions.push_back(c);
+        scene.triangles.indices.push_back({first, first + 1, first + 2});
+        scene.triangles.material.push_back(grey);
+        scene.triangles.smooth.push_back(0);
+    };
+    addFlatTriangle({Vec3(-1.5f, -1.0f, -3.2f), Vec3(-0.5f, -1.2f, -3.6f), Vec3(-1.0f, -0.3f, -3.3f)});  // tilted
+    addFlatTriangle({Vec3(0.5f, -0.5f, -3.0f), Vec3(0.5f, -0.5f, -3.0f), Vec3(0.7f, -0.2f, -3.0f)});    // degenerate
+    scene.spheres.push_back(Sphere{{1.3f, -0.7f, -3.5f}, 0.4f, grey});
+    addLight(scene, {1.0f, 1.5f, -1.0f}, 3.0f);
+    addLight(scene, {-2.0f, -1.0f, -2.0f}, 1.5f);
+    addLight(scene, {0.0f, 0.0f, -9.0f}, 5.0f);  // behind the floor
+    RenderResult plain = renderScene(scene, axisCamera(), 53, 37);
+    RenderResult general = renderScene(scene, axisCamera(), 53, 37, 2, {Aov::Depth});
+    REQUIRE(plain.colour.pixels.size() == general.colour.pixels.size());
+    CHECK(std::memcmp(plain.colour.pixels.data(), general.colour.pixels.data(), plain.colour.pixels.size() * sizeof(float)) == 0);
+    CHECK(plain.shadow.rays == general.shadow.rays);
+    CHECK(plain.shadow.primitiveTests == general.shadow.primitiveTests);
+    CHECK(plain.primary.rays == general.primary.rays);
+    // The same shadow rays, to the bit: their origins moved off the surface the same way.
+    CHECK(shadowRaysOf(scene, 53, 37, {}) == shadowRaysOf(scene, 53, 37, {Aov::Depth}));
 }

@@ -5,6 +5,7 @@
 #include "framework/render/accelerator_rays.h"
 #include "framework/render/area_lights.h"
 #include "framework/render/direct_lighting.h"
+#include "framework/render/point_light_batch.h"
 #include "framework/render/progress_bar.h"
 #include "framework/render/tiles.h"
 #include "framework/sampling/stratified.h"
@@ -63,11 +64,13 @@ struct PixelSamples {
 class TileRenderer {
 public:
     TileRenderer(const Scene& scene, const Camera& camera, const Accelerator& accelerator,
-                 const RenderSettings& settings, RenderResult& result)
+                 const TriangleSurfaces& surfaces, const RenderSettings& settings, RenderResult& result)
         : scene_(scene),
           accelerator_(accelerator),
           settings_(settings),
           film_(camera.film(settings.width, settings.height)),
+          surfaces_(surfaces),
+          pointLights_(scene, surfaces_, accelerator),
           areaLights_(scene),
           reach_(sceneReach(scene)),
           anyAov_(!settings.aovs.empty()),
@@ -86,20 +89,26 @@ public:
 
 private:
     // One ray through each pixel centre, point lights only and no AOVs: every POV-Ray reference
-    // and the benchmark's renders. Nothing is done per pixel but its ray, its query and, on a
-    // hit, its shading: no sample loop, no sum to divide, no write for a miss (the image starts
-    // black). The colour is what renderSamples computes for the same pixel, bit for bit.
+    // and the benchmark's renders. A few rows' rays are traced, then their hits shaded together
+    // (PointLightBatch); nothing is written for a miss (the image starts black). The colour is
+    // what renderSamples computes for the same pixel, bit for bit.
     void renderCentres(const Tile& tile, TileStats& stats) const {
         Ray rays[kTileSize];
+        HitBatch hits;
+        Vec3 radiance[kHitBatchSize];
         for (int y = tile.y0; y < tile.y1; ++y) {
             makeCentreRays(tile, y, rays);
             for (int x = tile.x0; x < tile.x1; ++x) {
                 const Ray& ray = rays[x - tile.x0];
                 Hit hit = accelerator_.intersect(ray, stats.primary);
                 if (!hit.found()) continue;
-                SurfaceHit surface = scene_.surfaceAt(ray, hit);
-                result_.colour.setRgb(x, y, directLighting(scene_, accelerator_, surface, ray.direction, stats.shadow));
+                surfaces_.prefetch(hit.prim);
+                hits.add(x, y, ray, hit);
             }
+            if (!hits.full() && y + 1 < tile.y1) continue;
+            pointLights_.shade(hits, radiance, stats.shadow);
+            for (int k = 0; k < hits.count; ++k) result_.colour.setRgb(hits.x[k], hits.y[k], radiance[k]);
+            hits.count = 0;
         }
     }
 
@@ -139,7 +148,7 @@ private:
         Hit hit = accelerator_.intersect(ray, stats.primary);
         Vec3 radiance(0.0f), normal(0.0f);  // misses are black
         if (hit.found()) {
-            SurfaceHit surface = scene_.surfaceAt(ray, hit);
+            SurfaceHit surface = surfaces_.surfaceAt(ray, hit);
             normal = faceViewer(surface.shadingNormal, ray.direction);
             radiance = directLighting(scene_, accelerator_, surface, ray.direction, stats.shadow);
             if (!areaLights_.empty()) {
@@ -169,6 +178,8 @@ private:
     const RenderSettings& settings_;
     const CameraFilm film_;
     std::vector<DVec3> centreColumns_;  // film_.column of every pixel centre
+    const TriangleSurfaces& surfaces_;
+    const PointLightBatch pointLights_;  // renderCentres' common hits
     const AreaLights areaLights_;
     const float reach_;
     const bool anyAov_;
@@ -191,7 +202,7 @@ RenderResult Renderer::render(const RenderSettings& settings) const {
     RenderResult result;
     result.colour = Image(settings.width, settings.height, 3);
     result.aovs = allocateAovs(settings);
-    const TileRenderer renderer(scene_, camera_, accelerator_, settings, result);
+    const TileRenderer renderer(scene_, camera_, accelerator_, surfaces_, settings, result);
 
     std::vector<Tile> tiles = makeTiles(settings.width, settings.height);
     std::vector<TileStats> tileStats(tiles.size());

@@ -10,6 +10,7 @@
 #include "framework/render/image.h"
 #include "framework/render/light_sampling.h"
 #include "framework/scene/scene.h"
+#include "framework/scene/triangle_surfaces.h"
 
 #include <vector>
 
@@ -38,9 +39,11 @@ struct RenderResult {
 
 class Renderer {
 public:
-    // The accelerator must have been built over a PrimitiveSet of this scene.
+    // The accelerator must have been built over a PrimitiveSet of this scene. Gathers the
+    // triangles' shading records (TriangleSurfaces) once, for every render it makes, as the
+    // accelerator is built once before them.
     Renderer(const Scene& scene, const Camera& camera, const Accelerator& accelerator)
-        : scene_(scene), camera_(camera), accelerator_(accelerator) {}
+        : scene_(scene), camera_(camera), accelerator_(accelerator), surfaces_(scene) {}
 
     // Throws rtlab::Error for an image size or sample count out of range, and whatever the
     // accelerator or an a6 estimator throws (rtlab::NotImplemented from a stub).
@@ -50,6 +53,7 @@ private:
     const Scene& scene_;
     const Camera& camera_;
     const Accelerator& accelerator_;
+    const TriangleSurfaces surfaces_;
 };
 
 }  // namespace rtlab

@@ -25,10 +25,7 @@ inline Vec3 offsetRayOrigin(const Vec3& p, const Vec3& pointError, const Vec3& n
     Vec3 offset = distance * n;
     if (glm::dot(w, n) < 0.0f) offset = -offset;
     Vec3 origin = p + offset;
-    for (int axis = 0; axis < 3; ++axis) {
-        if (offset[axis] > 0.0f) origin[axis] = nextFloatUp(origin[axis]);
-        else if (offset[axis] < 0.0f) origin[axis] = nextFloatDown(origin[axis]);
-    }
+    for (int axis = 0; axis < 3; ++axis) origin[axis] = floatStep(origin[axis], offset[axis]);
     return origin;
 }
 
