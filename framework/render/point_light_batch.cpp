@@ -21,8 +21,6 @@ float choose(bool c, float a, float b) {
     return std::bit_cast<float>((std::bit_cast<uint32_t>(a) & mask) | (std::bit_cast<uint32_t>(b) & ~mask));
 }
 
-}  // namespace
-
 // One float per hit in the lanes, one array per coordinate.
 struct Floats3 {
     float x[kHitBatchSize], y[kHitBatchSize], z[kHitBatchSize];
@@ -33,6 +31,8 @@ struct Floats3 {
         z[k] = v.z;
     }
 };
+
+}  // namespace
 
 struct PointLightBatch::Lanes {
     int count = 0;
