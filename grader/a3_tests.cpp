@@ -5,6 +5,7 @@
 #include "framework/core/pcg32.h"
 #include "grader/structure_tests.h"
 #include "grader/assignment_tests.h"
+#include "grader/given_structures.h"
 #include "grader/grid_oracle.h"
 #include "grader/scene_codec.h"
 #include "grader/truth_table.h"
@@ -497,6 +498,8 @@ StructurePlugin gridPlugin() {
     };
     plugin.queryTask = worker::kTaskGridQuery;
     plugin.queries = {{"closest-hits", worker::QueryKind::Closest, kStubClosest}, {"any-hits", worker::QueryKind::Occluded, kStubOccluded}};
+    plugin.given = givenGrid;
+    plugin.givenQueryTask = worker::kTaskGridGivenQuery;
     plugin.check = [options](const PhaseOutcome& build, const std::vector<Bounds3f>& primBounds, CheckScope) {
         StructureReport report;
         std::string problem;

@@ -6,6 +6,7 @@
 #include "framework/core/error.h"
 #include "framework/core/pcg32.h"
 #include "grader/assignment_tests.h"
+#include "grader/given_structures.h"
 #include "grader/octree_cases.h"
 #include "grader/octree_oracle.h"
 #include "grader/octree_structure.h"
@@ -582,6 +583,8 @@ StructurePlugin octreePlugin(std::shared_ptr<SceneMemo> memo) {
     };
     plugin.queryTask = worker::kTaskOctreeQuery;
     plugin.queries = {{"closest-hits", worker::QueryKind::Closest, kStubClosest}, {"any-hits", worker::QueryKind::Occluded, kStubOccluded}};
+    plugin.given = givenOctree;
+    plugin.givenQueryTask = worker::kTaskOctreeGivenQuery;
     plugin.check = [options, memo](const PhaseOutcome& build, const std::vector<Bounds3f>& primBounds, CheckScope) {
         std::shared_ptr<const Scene> scene = memo->find(primBounds);
         if (!scene) throw Error("a4: the structure check met a scene the build never sent");

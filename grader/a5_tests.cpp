@@ -4,10 +4,12 @@
 // cost against the reference data, and the generic accelerator checks. Optional and worth no
 // points: the O(N log N) build (the same tree) and the BSP autopartition (hit sets).
 #include "grader/assignment_tests.h"
+#include "grader/given_structures.h"
 #include "grader/hit_judge.h"
 #include "grader/kd_cases.h"
 #include "grader/kd_oracle.h"
 #include "grader/scene_codec.h"
+#include "grader/structure_codec.h"
 #include "grader/structure_tests.h"
 #include "grader/truth_table.h"
 #include "grader/worker/kdtree_inputs.h"
@@ -259,9 +261,7 @@ std::string listText(const std::vector<uint32_t>& prims) {
 ChildPhase walkPhase(const WalkCase& c, worker::QueryKind kind, const std::vector<Ray>& rays) {
     ByteWriter input;
     writeScene(c.scene, input);
-    input.put(worker::KdTreeFrame{c.tree.bounds, c.tree.maxDepth});
-    input.putVector(c.tree.nodes);
-    input.putVector(c.tree.primIndices);
+    writeKdTree(input, c.tree);
     input.put<uint8_t>(static_cast<uint8_t>(kind));
     input.putVector(rays);
     return makePhase(kind == worker::QueryKind::Occluded ? kStubOccluded : kStubClosest, worker::kTaskKdWalk, std::move(input));
@@ -363,6 +363,8 @@ StructurePlugin kdPlugin(const std::string& label, worker::KdBuildFunction funct
     });
     plugin.queryTask = worker::kTaskKdQuery;
     plugin.queries = {{"closest-hits", worker::QueryKind::Closest, kStubClosest}, {"any-hits", worker::QueryKind::Occluded, kStubOccluded}};
+    plugin.given = givenKdTree;
+    plugin.givenQueryTask = worker::kTaskKdGivenQuery;
     plugin.check = [options](const PhaseOutcome& build, const std::vector<Bounds3f>& primBounds, CheckScope) {
         StructureReport report;
         std::string problem;

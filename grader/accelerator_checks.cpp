@@ -104,24 +104,15 @@ size_t judgeOcclusion(PreparedScene& scene, const std::vector<worker::RawQuery>&
 }
 
 // The efficiency verdict (docs/grading.md#what-is-tested): the CPU time the kernel counted for
-// the worker while it ran the traversals, against a brute force over the same scene timed by
-// the grader in the same run. The framework's counters are shown too, but live in the worker,
-// so they are feedback, not evidence.
-void judgeEfficiency(const PreparedScene& scene, const SandboxRun& run, size_t firstQuery, size_t queries, TestResult& efficiency,
-                     const std::string& tag) {
-    double cpu = 0.0;
-    size_t phases = 0;
-    for (size_t k = firstQuery; k < run.phases.size(); ++k, ++phases) cpu += run.phases[k].cpuSeconds;
+// the worker, against a brute force over the same scene timed by the grader in the same run.
+// The framework's counters are shown too, but live in the worker, so they are feedback, not
+// evidence.
+EfficiencyVerdict measureEfficiency(const PreparedScene& scene, double cpuSeconds, size_t phases, size_t queries, const std::string& what) {
     double brute = double(queries) * scene.bruteForceSecondsPerRay;
     double allowed = kBruteForceShare * brute + kPhaseSlackSeconds * double(phases);
-    std::string line = tag + "traversal CPU time " + formatMilliseconds(cpu) + " for " + std::to_string(queries) +
-                       " queries (counted by the kernel); a brute force over the " + std::to_string(scene.primBounds.size()) +
-                       " primitives takes about " + formatMilliseconds(brute) + " here; allowed " + formatMilliseconds(allowed);
-    if (cpu <= allowed) markPassed(efficiency, line);
-    else {
-        efficiency.details.push_back(line);
-        markFailed(efficiency, "the traversal is about as slow as a brute force: " + line);
-    }
+    return {cpuSeconds <= allowed, what + " CPU time " + formatMilliseconds(cpuSeconds) + " for " + std::to_string(queries) +
+                                       " queries (counted by the kernel); a brute force over the " + std::to_string(scene.primBounds.size()) +
+                                       " primitives takes about " + formatMilliseconds(brute) + " here; allowed " + formatMilliseconds(allowed)};
 }
 
 std::shared_ptr<PreparedScene> prepareScene(TestScene test, uint64_t seed) {

@@ -65,9 +65,13 @@ size_t judgeClosestHits(PreparedScene& scene, const std::vector<worker::RawQuery
 size_t judgeOcclusion(PreparedScene& scene, const std::vector<worker::RawQuery>& answers, TestResult& result,
                       const std::string& tag);
 
-// The efficiency verdict over run.phases[firstQuery ..]: the kernel's CPU time for `queries`
-// queries against the scene's timed brute force.
-void judgeEfficiency(const PreparedScene& scene, const SandboxRun& run, size_t firstQuery, size_t queries,
-                     TestResult& efficiency, const std::string& tag);
+// The efficiency verdict on CPU time the kernel counted for `phases` worker phases that answered
+// `queries` queries: within kBruteForceShare of the scene's timed brute force over as many
+// queries, plus kPhaseSlackSeconds a phase. `what` names the work timed in the line.
+struct EfficiencyVerdict {
+    bool fast = false;
+    std::string line;
+};
+EfficiencyVerdict measureEfficiency(const PreparedScene& scene, double cpuSeconds, size_t phases, size_t queries, const std::string& what);
 
 }  // namespace rtlab::grader

@@ -1,6 +1,7 @@
 #include "grader/bvh_tests.h"
 
 #include "grader/bvh_structure.h"
+#include "grader/given_structures.h"
 #include "grader/scene_codec.h"
 #include "grader/structure_tests.h"
 #include "grader/worker/bvh_inputs.h"
@@ -77,6 +78,8 @@ StructurePlugin bvhPlugin(const BvhConfig& config) {
         plugin.visitsTask = worker::kTaskBvhVisits;
         plugin.visitsStub = kStubOrdered;
     }
+    plugin.given = givenBvh;
+    plugin.givenQueryTask = worker::kTaskBvhGivenQuery;
     return plugin;
 }
 

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <iostream>
 #include <map>
+#include <random>
 #include <unistd.h>
 
 namespace rtlab::grader {
@@ -59,17 +60,43 @@ bool matchesAny(const std::vector<std::string>& patterns, const std::string& nam
     return std::any_of(patterns.begin(), patterns.end(), [&](const std::string& p) { return globMatches(p, name); });
 }
 
-// Whether a group reports a test the patterns ask for. A group's tests are known only from its
-// scoring, which lists every test even when no phase ran (as for a submission that does not
-// compile): scored once on phases that all failed, without a worker.
-bool reportsWantedTest(const TestGroup& group, const std::vector<std::string>& patterns) {
-    std::vector<TestResult> names;
+// The tests a group defines, each failed: its scoring on phases that all failed, without a
+// worker. Only the grader's own data goes in, so the names and their number are the grader's;
+// a group lists every test even when no phase ran (a submission that does not compile).
+std::vector<TestResult> definedTests(const TestGroup& group) {
+    std::vector<TestResult> defined;
+    group.score(unavailableWorkerRun(group.phases.size(), "not run"), defined);
+    return defined;
+}
+
+bool reportsWantedTest(const std::vector<TestResult>& defined, const std::vector<std::string>& patterns) {
+    return std::any_of(defined.begin(), defined.end(), [&](const TestResult& r) { return matchesAny(patterns, r.name); });
+}
+
+// The group's verdicts on what the worker sent, for exactly the tests it defines: whatever the
+// worker's data made the scoring do (throw on a malformed record, skip or add a test), every
+// defined test is reported once under its own name, one the scoring did not reach as failed.
+void scoreDefinedTests(const TestGroup& group, const SandboxRun& run, const std::vector<TestResult>& defined,
+                       std::vector<TestResult>& into) {
+    std::vector<TestResult> reported;
+    std::string broken;
     try {
-        group.score(unavailableWorkerRun(group.phases.size(), "not run"), names);
-    } catch (const WireError&) {
-        return true;  // cannot tell: run it
+        group.score(run, reported);
+    } catch (const std::exception& e) {
+        broken = std::string("sent malformed results: ") + e.what();
     }
-    return std::any_of(names.begin(), names.end(), [&](const TestResult& r) { return matchesAny(patterns, r.name); });
+    for (const TestResult& test : defined) {
+        auto it = std::find_if(reported.begin(), reported.end(), [&](const TestResult& r) { return r.name == test.name; });
+        if (it != reported.end()) {
+            into.push_back(std::move(*it));
+            continue;
+        }
+        TestResult missing = test;
+        missing.status = TestStatus::Failed;
+        missing.fraction = 0.0;
+        missing.reason = broken.empty() ? "no verdict: the worker's results left this test unscored" : broken;
+        into.push_back(std::move(missing));
+    }
 }
 
 }  // namespace
@@ -81,6 +108,7 @@ GradingReport gradeWorker(const GradingOptions& options) {
     context.sourceDir = options.sourceDir;
     context.modelsDir = options.modelsDir;
     context.workDir = options.workDir;
+    context.structureKey = (uint64_t(std::random_device{}()) << 32) ^ std::random_device{}();
     std::string referenceDir = options.sourceDir + "/grader/reference";
     context.reference = options.writeReference ? ReferenceData::forWriting(referenceDir) : ReferenceData::load(referenceDir);
     Rubric rubric = Rubric::load(options.rubricPath.empty() ? options.sourceDir + "/grader/rubric.json" : options.rubricPath);
@@ -95,8 +123,14 @@ GradingReport gradeWorker(const GradingOptions& options) {
     };
     for (const Assignment& assignment : assignments())
         if (wanted(assignment.id)) add(assignment.groups(context));
+    std::vector<std::vector<TestResult>> defined;
+    for (const TestGroup& g : groups) defined.push_back(definedTests(g));
     if (!options.tests.empty()) {
-        std::erase_if(groups, [&](const TestGroup& g) { return !reportsWantedTest(g, options.tests); });
+        for (size_t i = groups.size(); i-- > 0;)
+            if (!reportsWantedTest(defined[i], options.tests)) {
+                groups.erase(groups.begin() + std::ptrdiff_t(i));
+                defined.erase(defined.begin() + std::ptrdiff_t(i));
+            }
         if (groups.empty()) throw Error("--test: no test of the graded assignments matches the patterns given");
     }
 
@@ -113,15 +147,7 @@ GradingReport gradeWorker(const GradingOptions& options) {
         SandboxRun run;
         if (!options.unavailableWorker.empty()) run = unavailableWorkerRun(group.phases.size(), options.unavailableWorker);
         else if (!group.phases.empty()) run = runSandboxed(worker, group.phases, &strikes);
-        size_t before = report.tests.size();
-        try {
-            group.score(run, report.tests);
-        } catch (const WireError& e) {
-            report.tests.resize(before);
-            TestResult broken = makeResult(group.assignment, group.assignment + "/" + group.title);
-            broken.reason = std::string("sent malformed results: ") + e.what();
-            report.tests.push_back(broken);
-        }
+        scoreDefinedTests(group, run, defined[i], report.tests);
         if (report.studentOutput.size() < 4096) report.studentOutput += run.output.substr(0, 4096 - report.studentOutput.size());
     }
     if (terminal) std::cerr << "\r\033[K" << std::flush;

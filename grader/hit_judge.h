@@ -37,14 +37,18 @@ public:
     std::string judgeClosest(size_t index, const Ray& ray, bool mustHit, const HitAnswer& answer);
     std::string judgeOccluded(size_t index, const Ray& ray, bool mustHit, bool occluded);
 
-private:
+    // A primitive the ray meets (within the edge slack), at t (without the ray's tMax), with the
+    // distance tolerance a float test is allowed; robust when the crossing is clear of its edges.
     struct Candidate {
         uint32_t prim;
         double t;
         double tolerance;
         bool robust;
     };
+    // Every candidate of ray `index` (computed once, then cached).
     const std::vector<Candidate>& candidates(size_t index, const Ray& ray);
+
+private:
     std::vector<Candidate> findCandidates(const Ray& ray) const;
 
     const Scene& scene_;

@@ -237,13 +237,13 @@ private:
     }
 
     void handle(const WorkerEvent& event) {
-        if (event.kind == WorkerEvent::Kind::Started) cpuAtStart_ = processCpuSeconds(pid_);
         if (event.kind != WorkerEvent::Kind::Verdict) return;
         size_t phase = event.phase;
         const std::vector<uint8_t>& payload = event.payload;
         PhaseOutcome& outcome = outcomes_[phase];
         const std::string stub = blame(phase);
         std::string text(payload.begin(), payload.end());
+        if (event.droppedBytes > 0) text += " [" + std::to_string(event.droppedBytes) + " more bytes not shown]";
         switch (event.record) {
         case RecordKind::PhaseData:
             outcome.status = PhaseStatus::Completed;
@@ -286,11 +286,14 @@ private:
         return phases_[phase].stub;
     }
 
+    // A phase's time runs from when the grader queued its request to the verdict: the worker is
+    // the student's process, so nothing it sends (a PhaseStart record written early or late)
+    // moves either end, and every CPU second it spends after one verdict is the next phase's.
     void finishPhase(size_t phase) {
         PhaseOutcome& outcome = outcomes_[phase];
         outcome.seconds = std::chrono::duration<double>(Clock::now() - phaseRequestedAt_).count();
         auto cpu = processCpuSeconds(pid_);
-        if (cpu && cpuAtStart_) outcome.cpuSeconds = *cpu - *cpuAtStart_;
+        if (cpu && cpuAtPhase_) outcome.cpuSeconds = *cpu - *cpuAtPhase_;
         reported_[phase] = true;
     }
 
@@ -357,7 +360,7 @@ private:
     pid_t pid_ = -1;
     int requestFd_ = -1;
     Clock::time_point phaseRequestedAt_, deadline_;
-    std::optional<double> cpuAtStart_, cpuAtPhase_;
+    std::optional<double> cpuAtPhase_;  // the worker's CPU time when the current phase was requested
     bool overran_ = false;
 };
 

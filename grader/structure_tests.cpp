@@ -10,12 +10,67 @@ namespace {
 
 // The visit-order test runs on this many of a scene's closest-hit rays.
 constexpr size_t kVisitRays = 300;
+// A traversal whose answers on the grader's structure hit primitives it does not hold along
+// the ray on this many rays or more walks something else: its answers elsewhere prove nothing.
+// (A correct traversal never does; a wrong one rarely, by visiting a cell off the ray.)
+constexpr size_t kUnfollowedRays = 3;
 
-ChildPhase queryPhase(const StructurePlugin& plugin, const QueryTest& query, const std::vector<Ray>& rays) {
+// A query phase: `structure` (empty for the structure the build made), then u8 QueryKind, [Ray].
+ChildPhase queryPhase(const QueryTest& query, const std::string& task, const std::vector<uint8_t>& structure, const std::vector<Ray>& rays) {
     ByteWriter input;
+    input.bytes() = structure;
     input.put<uint8_t>(static_cast<uint8_t>(query.kind));
     input.putVector(rays);
-    return makePhase(query.stub, plugin.queryTask, std::move(input));
+    return makePhase(query.stub, task, std::move(input));
+}
+
+ChildPhase queryPhase(const StructurePlugin& plugin, const QueryTest& query, const std::vector<Ray>& rays) {
+    return queryPhase(query, plugin.queryTask, {}, rays);
+}
+
+const std::vector<Ray>& raysOf(const PreparedScene& scene, const QueryTest& query) {
+    return query.kind == worker::QueryKind::Occluded ? scene.anyHitRays : scene.rays.rays;
+}
+
+// A given-structure phase's answers judged ray by ray (given_structure.h) and folded into the
+// hit-set test `result`: a wrong ray fails it as a wrong ray of the scene does. Returns how many
+// answers hit primitives the structure does not hold along their ray.
+size_t scoreGivenAnswers(PreparedScene& scene, const GivenStructureJudge& judge, const QueryTest& test, const PhaseOutcome& outcome,
+                         TestResult& result, const std::string& tag) {
+    const std::string where = tag + "on a structure the grader built, with primitives left out of some leaves: ";
+    bool occluded = test.kind == worker::QueryKind::Occluded;
+    const std::vector<Ray>& rays = raysOf(scene, test);
+    TestResult given;
+    auto answers = readQueries(outcome, rays.size(), given);
+    if (!answers) {
+        if (result.status == TestStatus::Passed) {
+            result.status = given.status;
+            result.fraction = 0.0;
+            result.reason = where + given.reason;
+        }
+        return 0;
+    }
+    size_t wrong = 0, unheld = 0;
+    std::string first;
+    for (size_t i = 0; i < answers->size(); ++i) {
+        const worker::RawQuery& a = (*answers)[i];
+        std::string problem = occluded ? judge.judgeOccluded(*scene.anyHitJudge, i, rays[i], a.prim != 0)
+                                       : judge.judgeClosest(*scene.judge, i, rays[i], HitAnswer{a.prim, a.t});
+        if (problem.empty()) continue;
+        unheld += problem.find(GivenStructureJudge::kNotInStructure) != std::string::npos;
+        std::string line = where + "ray " + std::to_string(i) + " " + describeRay(rays[i]) + ": " + problem;
+        if (wrong++ < 5) result.details.push_back(line);
+        if (first.empty()) first = line;
+    }
+    if (wrong == 0) result.details.push_back(where + "all " + std::to_string(rays.size()) + " rays follow it");
+    else if (result.status == TestStatus::Passed) markFailed(result, std::to_string(wrong) + " of " + std::to_string(rays.size()) + " rays wrong; first: " + first);
+    return unheld;
+}
+
+double cpuSeconds(const SandboxRun& run, size_t first, size_t end) {
+    double sum = 0.0;
+    for (size_t k = first; k < end; ++k) sum += run.phases[k].cpuSeconds;
+    return sum;
 }
 
 const QueryTest& queryOfKind(const StructurePlugin& plugin, worker::QueryKind kind) {
@@ -131,7 +186,7 @@ std::string stressProblem(const StressRay& r, const worker::RawQuery& a) {
     return describeRay(r.ray) + ": expected " + expected + ", got " + got;
 }
 
-TestGroup degenerateGroup(const StructurePlugin& plugin, std::shared_ptr<StressScene> stress) {
+TestGroup degenerateGroup(const StructurePlugin& plugin, std::shared_ptr<StressScene> stress, GradingContext& context) {
     auto closestRays = std::make_shared<std::vector<Ray>>(), occlusionRays = std::make_shared<std::vector<Ray>>();
     for (const StressRay& r : stress->rays) (r.occlusionQuery ? occlusionRays : closestRays)->push_back(r.ray);
     TestGroup group{plugin.assignment,
@@ -139,7 +194,7 @@ TestGroup degenerateGroup(const StructurePlugin& plugin, std::shared_ptr<StressS
                     {plugin.build(stress->scene), queryPhase(plugin, queryOfKind(plugin, worker::QueryKind::Closest), *closestRays),
                      queryPhase(plugin, queryOfKind(plugin, worker::QueryKind::Occluded), *occlusionRays)},
                     {}};
-    group.score = [plugin, stress, closestRays, occlusionRays](const SandboxRun& run, std::vector<TestResult>& results) {
+    group.score = [plugin, stress, closestRays, occlusionRays, &context](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult result = makeResult(plugin.assignment, plugin.assignment + "/" + plugin.label + "/degenerate-inputs");
         const std::string tag = "[" + stress->id + "] ";
         if (failedPhaseResult(run.phases[0], result)) {
@@ -165,6 +220,7 @@ TestGroup degenerateGroup(const StructurePlugin& plugin, std::shared_ptr<StressS
         for (const std::string& p : problems) result.details.push_back(tag + p);
         if (problems.empty()) markPassed(result, tag + "built and answered correctly");
         else markFailed(result, tag + problems.front());
+        requireFollowedStructure(context, result);
         results.push_back(std::move(result));
     };
     return group;
@@ -174,8 +230,7 @@ TestGroup degenerateGroup(const StructurePlugin& plugin, std::shared_ptr<StressS
 
 TestGroup structureSceneGroup(const StructurePlugin& plugin, std::shared_ptr<PreparedScene> scene, GradingContext& context) {
     TestGroup group{plugin.assignment, plugin.assignment + " " + plugin.label + " on " + scene->test.id, {plugin.build(scene->test.scene)}, {}};
-    for (const QueryTest& q : plugin.queries)
-        group.phases.push_back(queryPhase(plugin, q, q.kind == worker::QueryKind::Occluded ? scene->anyHitRays : scene->rays.rays));
+    for (const QueryTest& q : plugin.queries) group.phases.push_back(queryPhase(plugin, q, raysOf(*scene, q)));
     auto visitRays = std::make_shared<std::vector<Ray>>(scene->rays.rays.begin(),
                                                         scene->rays.rays.begin() + std::min(kVisitRays, scene->rays.rays.size()));
     if (!plugin.visitsTask.empty()) {
@@ -183,8 +238,16 @@ TestGroup structureSceneGroup(const StructurePlugin& plugin, std::shared_ptr<Pre
         input.putVector(*visitRays);
         group.phases.push_back(makePhase(plugin.visitsStub, plugin.visitsTask, std::move(input)));
     }
+    // Phases from firstGiven on run the traversals on the grader's own structure.
+    const size_t firstGiven = group.phases.size();
+    std::shared_ptr<const GivenStructureJudge> givenJudge;
+    if (plugin.given) {
+        GivenStructure given = plugin.given(scene->test.scene, context.structureKey);
+        for (const QueryTest& q : plugin.queries) group.phases.push_back(queryPhase(q, plugin.givenQueryTask, given.encoded, raysOf(*scene, q)));
+        givenJudge = std::make_shared<GivenStructureJudge>(std::move(given.leaves), scene->test.scene);
+    }
 
-    group.score = [plugin, scene, visitRays, &context](const SandboxRun& run, std::vector<TestResult>& results) {
+    group.score = [plugin, scene, visitRays, givenJudge, firstGiven, &context](const SandboxRun& run, std::vector<TestResult>& results) {
         const std::string tag = "[" + scene->test.id + "] ";
         auto result = [&](const std::string& name) {
             TestResult r = makeResult(plugin.assignment, plugin.assignment + "/" + plugin.label + "/" + name);
@@ -194,24 +257,25 @@ TestGroup structureSceneGroup(const StructurePlugin& plugin, std::shared_ptr<Pre
         TestResult structure = result("structure");
         std::optional<StructureReport> report = scoreStructure(plugin, run.phases[0], *scene, structure, tag);
 
-        // Every traversal's answers, judged ray by ray; efficiency needs all of them right.
+        // Every traversal's answers, judged ray by ray on the student's structure and on the
+        // grader's; efficiency needs all of them right.
         std::vector<TestResult> hitTests;
         std::vector<worker::RawQuery> closestAnswers, occludedAnswers;
-        size_t wrongHits = 0, queries = 0;
+        size_t wrongHits = 0, queries = 0, unheld = 0;
         bool allAnswered = true;
         for (size_t q = 0; q < plugin.queries.size(); ++q) {
             const QueryTest& test = plugin.queries[q];
             bool occluded = test.kind == worker::QueryKind::Occluded;
-            const std::vector<Ray>& rays = occluded ? scene->anyHitRays : scene->rays.rays;
             hitTests.push_back(result(test.name));
-            queries += rays.size();
-            auto answers = readQueries(run.phases[1 + q], rays.size(), hitTests.back());
+            queries += raysOf(*scene, test).size();
+            auto answers = readQueries(run.phases[1 + q], raysOf(*scene, test).size(), hitTests.back());
             if (!answers) {
                 allAnswered = false;
                 continue;
             }
             wrongHits += occluded ? judgeOcclusion(*scene, *answers, hitTests.back(), tag)
                                   : judgeClosestHits(*scene, *answers, hitTests.back(), tag);
+            if (givenJudge) unheld += scoreGivenAnswers(*scene, *givenJudge, test, run.phases[firstGiven + q], hitTests.back(), tag);
             if (test.kind == worker::QueryKind::Closest) closestAnswers = *answers;
             if (occluded) occludedAnswers = *answers;
         }
@@ -219,7 +283,13 @@ TestGroup structureSceneGroup(const StructurePlugin& plugin, std::shared_ptr<Pre
         // whatever they did with the empty structure.
         if (structure.status == TestStatus::NotStarted)
             for (TestResult& t : hitTests) failLike(t, structure, structure.reason);
-        bool hitsRight = allAnswered && wrongHits == 0;
+        bool hitsRight = allAnswered && wrongHits == 0 &&
+                         std::all_of(hitTests.begin(), hitTests.end(), [](const TestResult& t) { return t.status == TestStatus::Passed; });
+        if (unheld >= kUnfollowedRays)
+            context.unfollowedStructure.try_emplace(plugin.assignment, tag + "on " + std::to_string(unheld) +
+                                                                           " rays the traversal hit primitives the structure it was given "
+                                                                           "does not hold along them (see " + plugin.assignment + "/" + plugin.label + "/" +
+                                                                           plugin.queries.front().name + ")");
 
         // Reference values: recorded from a correct reference, otherwise read for comparison.
         ReferenceData& referenceData = context.reference;
@@ -261,12 +331,24 @@ TestGroup structureSceneGroup(const StructurePlugin& plugin, std::shared_ptr<Pre
                 }
             failLike(efficiency, *cause, "the traversal must return the right hits before its speed counts: " + cause->reason);
         } else {
-            judgeEfficiency(*scene, run, 1, queries + visitQueries, efficiency, tag);
+            // Timed on the grader's structure, whose phases no submission can foresee: an answer
+            // worked out before its phase (while building, say) would not fit it. Without one,
+            // on the traversals of the student's own structure.
+            std::vector<EfficiencyVerdict> verdicts;
+            if (givenJudge)
+                verdicts.push_back(measureEfficiency(*scene, cpuSeconds(run, firstGiven, run.phases.size()), run.phases.size() - firstGiven, queries,
+                                                     tag + "traversal on the grader's structure"));
+            else
+                verdicts.push_back(measureEfficiency(*scene, cpuSeconds(run, 1, firstGiven), firstGiven - 1, queries + visitQueries, tag + "traversal"));
+            auto slow = std::find_if(verdicts.begin(), verdicts.end(), [](const EfficiencyVerdict& v) { return !v.fast; });
+            for (const EfficiencyVerdict& v : verdicts) efficiency.details.push_back(v.line);
+            if (slow == verdicts.end()) markPassed(efficiency, "");
+            else markFailed(efficiency, "the traversal is about as slow as a brute force: " + slow->line);
         }
 
         TestResult visits = result("visit-order");
         if (!plugin.visitsTask.empty()) {
-            scoreVisitOrder(report ? &*report : nullptr, run.phases.back(), *scene, *visitRays, visits, tag);
+            scoreVisitOrder(report ? &*report : nullptr, run.phases[firstGiven - 1], *scene, *visitRays, visits, tag);
             if (structure.status == TestStatus::NotStarted) failLike(visits, structure, structure.reason);
         }
 
@@ -284,7 +366,7 @@ std::vector<TestGroup> structureGroups(const StructurePlugin& plugin, GradingCon
     for (const auto& scene : hitSetScenes(context).list) groups.push_back(structureSceneGroup(plugin, scene, context));
     for (StressScene& stress : stressScenes())
         if (std::find(plugin.skipDegenerate.begin(), plugin.skipDegenerate.end(), stress.id) == plugin.skipDegenerate.end())
-            groups.push_back(degenerateGroup(plugin, std::make_shared<StressScene>(std::move(stress))));
+            groups.push_back(degenerateGroup(plugin, std::make_shared<StressScene>(std::move(stress)), context));
     return groups;
 }
 

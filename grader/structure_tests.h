@@ -8,6 +8,7 @@
 #pragma once
 
 #include "grader/accelerator_checks.h"
+#include "grader/given_structure.h"
 #include "grader/stress_scenes.h"
 #include "grader/visit_order.h"
 
@@ -63,6 +64,10 @@ struct StructurePlugin {
     // tests (u32 n, u32 prim[n]), and the stub named in verdicts; empty: no visit-order test.
     std::string visitsTask;
     std::string visitsStub;
+    // The traversals again, on a structure the grader built (given_structure.h): its maker and
+    // the worker task answering `structure, u8 QueryKind, [Ray]`. Unset: not graded this way.
+    std::function<GivenStructure(const Scene& scene, uint64_t key)> given;
+    std::string givenQueryTask;
     // Degenerate scenes this structure is not asked to build, with the reason in a comment
     // where the plugin is made (70000 identical triangles fill every cell of a grid).
     std::vector<std::string> skipDegenerate;

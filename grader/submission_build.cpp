@@ -4,6 +4,7 @@
 #include "grader/compile_sandbox.h"
 #include "grader/pristine_stubs.h"
 #include "grader/stub_object_cache.h"
+#include "grader/submission_files.h"
 
 #include <nlohmann/json.hpp>
 
@@ -24,20 +25,6 @@ constexpr size_t kMaxFiles = 200;
 // build on. The renderer, the oracle and the reference renderers are not among them.
 constexpr const char* kStudentHeaderFolders[] = {"framework/core", "framework/interface", "framework/accel", "framework/scene"};
 
-// A submission's file, read only when it is a plain file: a symbolic link could point at
-// anything the grader may read (solutions/, reference data), so it is refused.
-std::string readPlainFile(const fs::path& path) {
-    auto status = fs::symlink_status(path);
-    if (fs::is_symlink(status)) throw Error(path.string() + ": a symbolic link; submit the file itself");
-    if (!fs::is_regular_file(status)) throw Error(path.string() + ": not a regular file");
-    if (fs::file_size(path) > kMaxFileBytes) throw Error(path.string() + ": larger than 1 MiB");
-    std::ifstream in(path, std::ios::binary);
-    std::string contents(std::istreambuf_iterator<char>(in), {});
-    if (!in.good() && !in.eof()) throw Error(path.string() + ": cannot be read");
-    if (in.bad()) throw Error(path.string() + ": cannot be read");
-    return contents;
-}
-
 void writeFile(const fs::path& path, const std::string& contents) {
     fs::create_directories(path.parent_path());
     std::ofstream out(path, std::ios::binary);
@@ -45,39 +32,46 @@ void writeFile(const fs::path& path, const std::string& contents) {
     if (!out) throw Error(path.string() + ": cannot be written");
 }
 
+// A framework file (a student header) read for the compile sandbox.
+std::string readFrameworkFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string contents(std::istreambuf_iterator<char>(in), {});
+    if (!in.good() && !in.eof()) throw Error(path.string() + ": cannot be read");
+    return contents;
+}
+
 bool isSource(const fs::path& p) { return p.extension() == ".cpp" || p.extension() == ".h" || p.extension() == ".hpp"; }
 
 // Where a submission keeps the file that replaces stub `relative` (assignments/a0_intersect/
 // ray_box.cpp): under the same path, without the assignments/ prefix, or flat by file name.
-std::optional<fs::path> findInSubmission(const fs::path& submission, const fs::path& relative) {
+std::optional<fs::path> findInSubmission(const SubmissionFolder& submission, const fs::path& relative) {
     fs::path withoutRoot = relative.lexically_relative("assignments");
-    for (const fs::path& candidate : {submission / relative, submission / withoutRoot, submission / relative.filename()})
-        if (fs::exists(fs::symlink_status(candidate))) return candidate;
+    for (const fs::path& candidate : {relative, withoutRoot, relative.filename()})
+        if (submission.kind(candidate) != SubmissionFolder::Kind::Missing) return candidate;
     return std::nullopt;
 }
 
 // The stubs, replaced file by file by the submission's, plus the submission's own helper
 // sources and headers in its assignment folders. Returns the files taken from the submission.
-std::vector<std::string> mergeSources(const fs::path& submission, const std::map<std::string, std::string>& stubs, const fs::path& into) {
+std::vector<std::string> mergeSources(const SubmissionFolder& submission, const std::map<std::string, std::string>& stubs, const fs::path& into) {
     std::vector<std::string> taken;
     std::set<fs::path> assignments;
     for (const auto& [name, contents] : stubs) {
         fs::path relative = name;
         assignments.insert(relative.parent_path());
         auto replacement = findInSubmission(submission, relative);
-        writeFile(into / relative, replacement ? readPlainFile(*replacement) : contents);
-        if (replacement) taken.push_back(replacement->string());
+        writeFile(into / relative, replacement ? submission.read(*replacement, kMaxFileBytes) : contents);
+        if (replacement) taken.push_back((submission.root() / *replacement).string());
     }
     for (const fs::path& assignment : assignments) {
         fs::path name = assignment.filename();
-        for (const fs::path& folder : {submission / "assignments" / name, submission / name}) {
-            if (fs::is_symlink(fs::symlink_status(folder)) || !fs::is_directory(folder)) continue;
-            for (const auto& entry : fs::directory_iterator(folder)) {
-                fs::path target = into / assignment / entry.path().filename();
-                if (!isSource(entry.path()) || stubs.count((assignment / entry.path().filename()).string())) continue;
-                if (taken.size() >= kMaxFiles) throw Error(submission.string() + ": more than 200 source files");
-                writeFile(target, readPlainFile(entry.path()));
-                taken.push_back(entry.path().string());
+        for (const fs::path& folder : {fs::path("assignments") / name, name}) {
+            if (submission.kind(folder) != SubmissionFolder::Kind::Folder) continue;
+            for (const std::string& entry : submission.list(folder)) {
+                if (!isSource(entry) || stubs.count((assignment / entry).string())) continue;
+                if (taken.size() >= kMaxFiles) throw Error(submission.root().string() + ": more than 200 source files");
+                writeFile(into / assignment / entry, submission.read(folder / entry, kMaxFileBytes));
+                taken.push_back((submission.root() / folder / entry).string());
             }
         }
     }
@@ -87,7 +81,7 @@ std::vector<std::string> mergeSources(const fs::path& submission, const std::map
 void copyStudentHeaders(const fs::path& sourceDir, const fs::path& into) {
     for (const char* folder : kStudentHeaderFolders)
         for (const auto& entry : fs::directory_iterator(sourceDir / folder))
-            if (entry.path().extension() == ".h") writeFile(into / folder / entry.path().filename(), readPlainFile(entry.path()));
+            if (entry.path().extension() == ".h") writeFile(into / folder / entry.path().filename(), readFrameworkFile(entry.path()));
 }
 
 nlohmann::json readToolchain(const std::string& path) {
@@ -121,7 +115,7 @@ std::map<std::string, std::string> takeUngraded(std::map<std::string, std::strin
 
 SubmissionBuild buildSubmission(const std::string& submissionDir, const std::string& sourceDir, const std::string& toolchainPath,
                                 const std::string& workDir, const CompileLimits& limits, const std::vector<std::string>& gradedFolders) {
-    if (!fs::is_directory(submissionDir)) throw Error(submissionDir + ": the submission folder does not exist");
+    SubmissionFolder submission(submissionDir);
     nlohmann::json toolchain = readToolchain(toolchainPath);
     const CompileSandbox& sandbox = CompileSandbox::detect();
     ProcessLimits processLimits;
@@ -130,7 +124,6 @@ SubmissionBuild buildSubmission(const std::string& submissionDir, const std::str
     processLimits.memoryMiB = limits.memoryMiB;
 
     SubmissionBuild build;
-    build.isolation = sandbox.description();
     // The runtime is copied, so the compiler needs nothing of the build tree (whose folders an
     // unprivileged user may not be able to enter).
     CompileInputs host{(fs::path(workDir) / "src").string(), (fs::path(workDir) / "include").string(),
@@ -158,7 +151,7 @@ SubmissionBuild buildSubmission(const std::string& submissionDir, const std::str
         if (object.empty()) stubs.merge(ungraded);
         else fs::copy_file(object, fs::path(host.objects) / "stubs.o", fs::copy_options::overwrite_existing);
     }
-    build.fromSubmission = mergeSources(submissionDir, stubs, host.sources);
+    build.fromSubmission = mergeSources(submission, stubs, host.sources);
 
     CompileInputs inside = sandbox.visiblePaths(host);
     std::vector<std::string> command = {fs::canonical(toolchain.at("compiler").get<std::string>()).string()};

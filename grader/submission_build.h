@@ -15,7 +15,6 @@ struct SubmissionBuild {
     std::string executable;                   // the worker
     std::string log;                          // raw compiler and linker output, or why the build was refused
     std::vector<std::string> fromSubmission;  // the files taken from the submission
-    std::string isolation;                    // what the compile sandbox consisted of
 };
 
 struct CompileLimits {

@@ -2,6 +2,7 @@
 
 #include "framework/core/error.h"
 #include "grader/assignment_registry.h"
+#include "grader/compile_sandbox.h"
 #include "grader/rubric.h"
 #include "grader/submission_build.h"
 
@@ -74,7 +75,8 @@ GradingReport gradeSubmission(const std::string& submissionDir, const Submission
     for (const std::string& line : splitLines(build.log, 60)) buildTest.details.push_back(line);
 
     GradingReport report = gradeWorker(g);
-    if (!build.isolation.empty()) report.isolation += "; " + build.isolation;
+    // The compile sandbox a submission is built in, also when it could not be read.
+    report.isolation += "; " + CompileSandbox::detect().description();
     report.tests.insert(report.tests.begin(), buildTest);
     Rubric::load(g.rubricPath.empty() ? g.sourceDir + "/grader/rubric.json" : g.rubricPath).apply(report.tests);
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

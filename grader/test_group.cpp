@@ -21,6 +21,14 @@ bool failedPhaseResult(const PhaseOutcome& outcome, TestResult& result) {
     return true;
 }
 
+void requireFollowedStructure(const GradingContext& context, TestResult& result) {
+    auto it = context.unfollowedStructure.find(result.assignment);
+    if (it == context.unfollowedStructure.end() || result.status != TestStatus::Passed) return;
+    result.status = TestStatus::Failed;
+    result.fraction = 0.0;
+    result.reason = "not credited: the traversal does not follow the structure it is given, so these answers may come from another: " + it->second;
+}
+
 TestResult makeResult(const std::string& assignment, const std::string& name) {
     TestResult result;
     result.assignment = assignment;

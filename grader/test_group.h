@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -26,6 +27,13 @@ struct GradingContext {
     std::string workDir;    // renders and heat maps for the HTML report
     ReferenceData reference;
     std::shared_ptr<PreparedScenes> scenes;  // built on first use
+    // Which primitives the grader's own structures leave out of which leaves
+    // (given_structure.h): drawn afresh for every grading run, never derived from the seed, so a
+    // submission cannot know it in advance.
+    uint64_t structureKey = 0;
+    // Per assignment, why its traversal was found not to follow the structure it was given; the
+    // tests whose answers a private structure could produce (images, degenerate inputs) read it.
+    std::map<std::string, std::string> unfollowedStructure;
 };
 
 struct TestGroup {
@@ -45,6 +53,10 @@ ChildPhase makePhase(std::string stub, std::string task, ByteWriter input);
 // The verdict for a test whose phase did not complete: "not started" for NotImplemented,
 // otherwise failed with the sandbox's one-line reason. Returns false when the phase completed.
 bool failedPhaseResult(const PhaseOutcome& outcome, TestResult& result);
+
+// Fails a passed result when its assignment's traversal was found not to follow the structure
+// it was given (GradingContext::unfollowedStructure): what it earned could come from another.
+void requireFollowedStructure(const GradingContext& context, TestResult& result);
 
 // A result named by its test with the assignment set; status failed until scored.
 TestResult makeResult(const std::string& assignment, const std::string& name);

@@ -65,7 +65,12 @@ std::optional<WorkerEvent> WorkerConversation::accept(uint8_t kind, uint32_t pha
         return std::nullopt;
     }
     verdictGiven_ = true;
-    return WorkerEvent{WorkerEvent::Kind::Verdict, phase, record, std::vector<uint8_t>(payload.begin(), payload.end())};
+    size_t dropped = 0;
+    if ((record == RecordKind::NotStarted || record == RecordKind::Failed) && payload.size() > kMaxTextPayload) {
+        dropped = payload.size() - kMaxTextPayload;
+        payload = payload.first(kMaxTextPayload);
+    }
+    return WorkerEvent{WorkerEvent::Kind::Verdict, phase, record, std::vector<uint8_t>(payload.begin(), payload.end()), dropped};
 }
 
 }  // namespace rtlab::grader

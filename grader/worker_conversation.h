@@ -18,6 +18,7 @@ struct WorkerEvent {
     size_t phase = 0;
     worker::RecordKind record = worker::RecordKind::Done;  // for verdicts: how the phase ended
     std::vector<uint8_t> payload;
+    size_t droppedBytes = 0;  // of a text record's payload beyond kMaxTextPayload
 };
 
 class WorkerConversation {
@@ -47,6 +48,10 @@ public:
     bool done() const { return done_; }
 
     static constexpr uint64_t kMaxPayload = uint64_t(1) << 30;
+    // A text record (NotStarted, Failed: a name or an exception's message) keeps at most this
+    // many bytes of its payload: the rest is read and dropped here, so no report, table or CSV
+    // downstream ever holds more of what student code says than this.
+    static constexpr size_t kMaxTextPayload = 512;
 
 private:
     std::optional<WorkerEvent> accept(uint8_t kind, uint32_t phase, std::span<const uint8_t> payload);

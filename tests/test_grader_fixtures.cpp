@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 #include <unistd.h>
 
@@ -30,6 +31,20 @@ void applyPatch(const fs::path& submission, const nlohmann::json& patch) {
     std::ofstream(file) << text;
 }
 
+// The links a fixture asks for ("links": path in the submission -> target, where <source> is the
+// repository and <submissions> the folder of all submissions), made after copying: git and
+// the copy would follow them.
+void makeLinks(const fs::path& submission, const nlohmann::json& links, const fs::path& source, const fs::path& submissions) {
+    for (const auto& [at, target] : links.items()) {
+        std::string to = target.get<std::string>();
+        for (auto [mark, value] : {std::pair<std::string, std::string>{"<source>", source.string()}, {"<submissions>", submissions.string()}})
+            if (to.rfind(mark, 0) == 0) to = value + to.substr(mark.size());
+        fs::remove_all(submission / at);
+        fs::create_directories((submission / at).parent_path());
+        fs::create_directory_symlink(to, submission / at);
+    }
+}
+
 // The submissions folder the batch grades: each fixture as it is, or laid over a copy of the
 // reference solutions when it says with_solutions.
 fs::path assembleSubmissions(const nlohmann::json& fixtures, const fs::path& source, const fs::path& into) {
@@ -42,7 +57,54 @@ fs::path assembleSubmissions(const nlohmann::json& fixtures, const fs::path& sou
             fs::copy(source / "grader/fixtures" / name, target, fs::copy_options::recursive | fs::copy_options::overwrite_existing);
         if (expected.contains("patch")) applyPatch(target, expected.at("patch"));
     }
+    for (const auto& [name, expected] : fixtures.items())
+        if (expected.contains("links")) makeLinks(into / name, expected.at("links"), source, into);
     return into;
+}
+
+// The fixtures by the assignments they are graded on ("assignments", a0 and a1 unless said):
+// one batch each.
+std::map<std::vector<std::string>, nlohmann::json> byAssignments(const nlohmann::json& fixtures) {
+    std::map<std::vector<std::string>, nlohmann::json> batches;
+    for (const auto& [name, expected] : fixtures.items()) {
+        std::vector<std::string> assignments = expected.value("assignments", std::vector<std::string>{"a0", "a1"});
+        batches[assignments][name] = expected;
+    }
+    return batches;
+}
+
+void checkFixture(const std::string& name, const nlohmann::json& expected, const fs::path& work) {
+    CAPTURE(name);
+    const fs::path reportPath = work / "grades-reports" / (name + ".json");
+    GradingReport report = readJsonReport(reportPath.string());
+    if (expected.contains("score_at_least")) {
+        CHECK(report.score() >= expected.at("score_at_least").get<double>());
+        if (expected.contains("score_below")) CHECK(report.score() < expected.at("score_below").get<double>());
+    } else {
+        CHECK(report.score() == 0.0);
+    }
+    CHECK(report.maxScore() > 0.0);
+    // Every test the graded assignments define is listed, whatever the worker sent.
+    if (expected.contains("max_score")) CHECK(report.maxScore() == expected.at("max_score").get<double>());
+    if (expected.contains("report_bytes_below")) CHECK(fs::file_size(reportPath) < expected.at("report_bytes_below").get<uintmax_t>());
+    CHECK(report.isolation.find("a seccomp filter loaded at its first instruction") != std::string::npos);
+    CHECK(report.isolation.find("bubblewrap mount namespace") != std::string::npos);
+    const TestResult* test = nullptr;
+    for (const TestResult& t : report.tests)
+        if (t.name == expected.at("test").get<std::string>()) test = &t;
+    REQUIRE(test != nullptr);
+    CAPTURE(test->reason);
+    CAPTURE(testOutput(*test));
+    CHECK(testStatusName(test->status) == expected.at("status").get<std::string>());
+    if (expected.contains("reason")) CHECK(test->reason.find(expected.at("reason").get<std::string>()) != std::string::npos);
+    if (expected.contains("reason_bytes_below")) CHECK(test->reason.size() < expected.at("reason_bytes_below").get<size_t>());
+    if (expected.contains("details")) CHECK(testOutput(*test).find(expected.at("details").get<std::string>()) != std::string::npos);
+    if (expected.contains("student_output"))
+        CHECK(report.studentOutput.find(expected.at("student_output").get<std::string>()) != std::string::npos);
+    for (const auto& path : expected.value("not_created", nlohmann::json::array())) {
+        CHECK_FALSE(fs::exists(path.get<std::string>()));
+        CHECK_FALSE(fs::exists(work / path.get<std::string>()));
+    }
 }
 
 }  // namespace
@@ -56,43 +118,24 @@ TEST_CASE("grader fixtures: every hostile or broken submission gets its verdict 
     auto fixtures = nlohmann::json::parse(std::ifstream(source / "grader/fixtures/expectations.json")).at("fixtures");
     for (const auto& [name, expected] : fixtures.items())
         for (const auto& path : expected.value("not_created", nlohmann::json::array())) fs::remove(path.get<std::string>());
-    fs::path submissions = assembleSubmissions(fixtures, source, work / "submissions");
-
-    // Run from `work`, so relative paths a fixture tries to write would land there.
-    std::string command = "cd '" + work.string() + "' && '" + (binary / "rtlab-solution").string() + "' grade --submissions '" +
-                          submissions.string() + "' --jobs 2 --csv grades.csv --time-limit 1 --memory-limit 256 --compile-time-limit 40" +
-                          " --assignment a0 --assignment a1 --models '" + (binary / "models").string() + "' --work '" +
-                          (work / "grading").string() + "' > batch.log 2>&1";
-    REQUIRE(std::system(command.c_str()) == 0);
-    REQUIRE(fs::exists(work / "grades.csv"));
-
-    for (const auto& [name, expected] : fixtures.items()) {
-        CAPTURE(name);
-        GradingReport report = readJsonReport((work / "grades-reports" / (name + ".json")).string());
-        if (expected.contains("score_at_least")) {
-            CHECK(report.score() >= expected.at("score_at_least").get<double>());
-            if (expected.contains("score_below")) CHECK(report.score() < expected.at("score_below").get<double>());
-        } else {
-            CHECK(report.score() == 0.0);
+    for (const auto& [assignments, batch] : byAssignments(fixtures)) {
+        std::string list, folder = "batch";
+        for (const std::string& a : assignments) {
+            list += " --assignment " + a;
+            folder += "-" + a;
         }
-        CHECK(report.maxScore() > 0.0);
-        CHECK(report.isolation.find("a seccomp filter loaded at its first instruction") != std::string::npos);
-        CHECK(report.isolation.find("bubblewrap mount namespace") != std::string::npos);
-        const TestResult* test = nullptr;
-        for (const TestResult& t : report.tests)
-            if (t.name == expected.at("test").get<std::string>()) test = &t;
-        REQUIRE(test != nullptr);
-        CAPTURE(test->reason);
-        CAPTURE(testOutput(*test));
-        CHECK(testStatusName(test->status) == expected.at("status").get<std::string>());
-        if (expected.contains("reason")) CHECK(test->reason.find(expected.at("reason").get<std::string>()) != std::string::npos);
-        if (expected.contains("details")) CHECK(testOutput(*test).find(expected.at("details").get<std::string>()) != std::string::npos);
-        if (expected.contains("student_output"))
-            CHECK(report.studentOutput.find(expected.at("student_output").get<std::string>()) != std::string::npos);
-        for (const auto& path : expected.value("not_created", nlohmann::json::array())) {
-            CHECK_FALSE(fs::exists(path.get<std::string>()));
-            CHECK_FALSE(fs::exists(work / path.get<std::string>()));
-        }
+        CAPTURE(list);
+        const fs::path batchWork = work / folder;
+        fs::create_directories(batchWork);
+        fs::path submissions = assembleSubmissions(batch, source, batchWork / "submissions");
+        // Run from the batch's folder, so relative paths a fixture tries to write would land there.
+        std::string command = "cd '" + batchWork.string() + "' && '" + (binary / "rtlab-solution").string() + "' grade --submissions '" +
+                              submissions.string() + "' --jobs 2 --csv grades.csv --time-limit 1 --memory-limit 256 --compile-time-limit 40" +
+                              list + " --models '" + (binary / "models").string() + "' --work '" + (batchWork / "grading").string() +
+                              "' > batch.log 2>&1";
+        REQUIRE(std::system(command.c_str()) == 0);
+        REQUIRE(fs::exists(batchWork / "grades.csv"));
+        for (const auto& [name, expected] : batch.items()) checkFixture(name, expected, batchWork);
     }
     fs::remove_all(work);
 }

@@ -9,6 +9,7 @@ namespace rtlab::grader::worker {
 inline constexpr const char* kTaskSplit = "split";           // SplitCall... -> per call u32 k, u32 order[n]
 inline constexpr const char* kTaskBvhBuild = "bvh-build";    // scene, BvhOptions -> [BvhNode], [u32]
 inline constexpr const char* kTaskBvhQuery = "bvh-query";    // u8 QueryKind, [Ray] -> [RawQuery]
+inline constexpr const char* kTaskBvhGivenQuery = "bvh-given-query";  // BVH (structure_codec.h), u8 QueryKind, [Ray] -> [RawQuery]
 inline constexpr const char* kTaskBvhVisits = "bvh-visits";  // [Ray] -> per ray u32 n, u32 prim[n]
 
 enum class SplitFunction : uint8_t { Median, Middle, EqualCounts, SahSweep, SahBuckets };

@@ -4,6 +4,7 @@
 #include "framework/interface/a1_bvh.h"
 #include "framework/interface/a2_sah.h"
 #include "grader/scene_codec.h"
+#include "grader/structure_codec.h"
 #include "grader/worker/query_answers.h"
 #include "grader/worker/bvh_inputs.h"
 #include "grader/worker/worker_tasks.h"
@@ -49,20 +50,26 @@ void runBvhBuild(ByteReader& input, ByteWriter& output, WorkerState& state) {
     state.primitives = std::make_unique<PrimitiveSet>(state.scene);
     Bvh& bvh = state.structure.emplace<Bvh>();  // queries after a build that threw see an empty tree
     bvh = buildBvh(buildPrimitivesOf(*state.primitives), options);
-    output.putVector(bvh.nodes);
-    output.putVector(bvh.primIndices);
+    writeBvh(output, bvh);
+}
+
+void answerBvhQueries(const Bvh& bvh, const PrimitiveSet& primitives, ByteReader& input, ByteWriter& output) {
+    QueryRequest request = readQueryRequest(input);
+    output.putVector(answerRays(
+        primitives, request.rays, request.kind == QueryKind::Occluded, [&](Traversal& t) { return occludedBvh(bvh, t); },
+        [&](Traversal& t, Hit& hit) {
+            return request.kind == QueryKind::Recursive ? intersectBvhRecursive(bvh, t, hit) : intersectBvh(bvh, t, hit);
+        }));
 }
 
 void runBvhQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
-    const Bvh& bvh = builtStructure<Bvh>(state);
-    auto query = static_cast<QueryKind>(input.get<uint8_t>());
-    auto rays = input.getVector<Ray>(kMaxPrimitives);
-    auto answers = answerRays(
-        *state.primitives, rays, query == QueryKind::Occluded, [&](Traversal& t) { return occludedBvh(bvh, t); },
-        [&](Traversal& t, Hit& hit) {
-            return query == QueryKind::Recursive ? intersectBvhRecursive(bvh, t, hit) : intersectBvh(bvh, t, hit);
-        });
-    output.putVector(answers);
+    answerBvhQueries(builtStructure<Bvh>(state), *state.primitives, input, output);
+}
+
+// The traversal on a BVH the grader built (given_structure.h), not the one the build made.
+void runBvhGivenQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
+    const PrimitiveSet& primitives = builtPrimitives(state);
+    answerBvhQueries(readBvh(input, primitives.size()), primitives, input, output);
 }
 
 // The ordered traversal again, listing the primitives it tests in order: the visit-order test
@@ -77,6 +84,7 @@ void runBvhVisits(ByteReader& input, ByteWriter& output, WorkerState& state) {
 const TaskRegistration registration{{kTaskSplit, runSplitCalls},
                                     {kTaskBvhBuild, runBvhBuild},
                                     {kTaskBvhQuery, runBvhQuery},
+                                    {kTaskBvhGivenQuery, runBvhGivenQuery},
                                     {kTaskBvhVisits, runBvhVisits}};
 
 }  // namespace

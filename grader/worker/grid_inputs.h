@@ -16,6 +16,7 @@ inline constexpr const char* kTaskDdaStep = "dda-step";      // [DdaStepCall] ->
 inline constexpr const char* kTaskDdaWalk = "dda-walk";      // GridFrame, [DdaSetupCall] -> per walk u32 n, i32[3] x n
 inline constexpr const char* kTaskGridBuild = "grid-build";  // scene, GridOptions -> GridFrame, [u32], [u32]
 inline constexpr const char* kTaskGridQuery = "grid-query";  // u8 QueryKind, [Ray] -> [RawQuery]
+inline constexpr const char* kTaskGridGivenQuery = "grid-given-query";  // grid (structure_codec.h), u8 QueryKind, [Ray] -> [RawQuery]
 
 // The frame of a uniform grid without its cells (UniformGrid holds vectors).
 struct GridFrame {

@@ -2,6 +2,7 @@
 // step and walk, a whole grid build and traversals of the grid that build produced.
 #include "framework/interface/a3_grid.h"
 #include "grader/scene_codec.h"
+#include "grader/structure_codec.h"
 #include "grader/worker/query_answers.h"
 #include "grader/worker/grid_inputs.h"
 #include "grader/worker/worker_tasks.h"
@@ -10,7 +11,6 @@ namespace rtlab::grader::worker {
 namespace {
 
 constexpr uint64_t kMaxCalls = uint64_t(1) << 20;
-constexpr uint64_t kMaxRays = uint64_t(1) << 24;
 // Grids the grader sends have at most 1024 cells per axis (GridOptions::maxResolution).
 constexpr int32_t kMaxFrameResolution = 1024;
 
@@ -86,25 +86,31 @@ void runGridBuild(ByteReader& input, ByteWriter& output, WorkerState& state) {
     UniformGrid& grid = state.structure.emplace<UniformGrid>();  // queries after a build that threw see an empty grid
     grid = gridFrame(state.primitives->allBounds(), options);
     fillGridCells(grid, state.primitives->allBounds());
-    output.put(GridFrame{grid.bounds, grid.resolution, grid.cellWidth, grid.inverseWidth});
-    output.putVector(grid.cellStart);
-    output.putVector(grid.primIndices);
+    writeGrid(output, grid);
+}
+
+void answerGridQueries(const UniformGrid& grid, const PrimitiveSet& primitives, ByteReader& input, ByteWriter& output) {
+    QueryRequest request = readQueryRequest(input);
+    output.putVector(answerRays(
+        primitives, request.rays, request.kind == QueryKind::Occluded, [&](Traversal& t) { return occludedGrid(grid, t); },
+        [&](Traversal& t, Hit& hit) { return intersectGrid(grid, t, hit); }));
 }
 
 void runGridQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
-    const UniformGrid& grid = builtStructure<UniformGrid>(state);
-    auto query = static_cast<QueryKind>(input.get<uint8_t>());
-    auto rays = input.getVector<Ray>(kMaxRays);
-    auto answers = answerRays(
-        *state.primitives, rays, query == QueryKind::Occluded, [&](Traversal& t) { return occludedGrid(grid, t); },
-        [&](Traversal& t, Hit& hit) { return intersectGrid(grid, t, hit); });
-    output.putVector(answers);
+    answerGridQueries(builtStructure<UniformGrid>(state), *state.primitives, input, output);
+}
+
+// The traversal on a grid the grader built (given_structure.h), not the one the build made.
+void runGridGivenQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
+    const PrimitiveSet& primitives = builtPrimitives(state);
+    answerGridQueries(readGrid(input, primitives.size()), primitives, input, output);
 }
 
 const TaskRegistration registration{{kTaskGridResolution, runGridResolution}, {kTaskGridCell, runGridCell},
                                     {kTaskGridRange, runGridRange},           {kTaskDdaSetup, runDdaSetup},
                                     {kTaskDdaStep, runDdaStep},               {kTaskDdaWalk, runDdaWalk},
-                                    {kTaskGridBuild, runGridBuild},           {kTaskGridQuery, runGridQuery}};
+                                    {kTaskGridBuild, runGridBuild},           {kTaskGridQuery, runGridQuery},
+                                    {kTaskGridGivenQuery, runGridGivenQuery}};
 
 }  // namespace
 

@@ -18,6 +18,7 @@ inline constexpr const char* kTaskKdChildOrder = "kd-child-order";    // [KdChil
 inline constexpr const char* kTaskKdWalk = "kd-walk";                 // scene, KdTreeFrame, [KdNode], [u32], u8 QueryKind, [Ray] -> per ray RawQuery, u32 n, u32 prim[n]
 inline constexpr const char* kTaskKdBuild = "kd-build";               // scene, KdTreeOptions, u8 KdBuildFunction -> KdTreeFrame, [KdNode], [u32]
 inline constexpr const char* kTaskKdQuery = "kd-query";               // u8 QueryKind, [Ray] -> [RawQuery]
+inline constexpr const char* kTaskKdGivenQuery = "kd-given-query";    // KD-tree (structure_codec.h), u8 QueryKind, [Ray] -> [RawQuery]
 inline constexpr const char* kTaskBspBuild = "bsp-build";             // scene, BspOptions -> u64 nodes
 inline constexpr const char* kTaskBspQuery = "bsp-query";             // u8 QueryKind, [Ray] -> [RawQuery]
 

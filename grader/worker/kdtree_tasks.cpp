@@ -3,6 +3,7 @@
 // and traversals of the tree it produced; and the optional BSP autopartition.
 #include "framework/interface/a5_kdtree.h"
 #include "grader/scene_codec.h"
+#include "grader/structure_codec.h"
 #include "grader/worker/kdtree_inputs.h"
 #include "grader/worker/query_answers.h"
 #include "grader/worker/worker_tasks.h"
@@ -72,28 +73,12 @@ void runKdChildOrder(ByteReader& input, ByteWriter& output, WorkerState&) {
     }
 }
 
-KdTree readTree(ByteReader& input) {
-    KdTree tree;
-    auto frame = input.get<KdTreeFrame>();
-    tree.bounds = frame.bounds;
-    tree.maxDepth = frame.maxDepth;
-    tree.nodes = input.getVector<KdNode>(kMaxItems);
-    tree.primIndices = input.getVector<uint32_t>(kMaxItems);
-    return tree;
-}
-
-void putTree(ByteWriter& output, const KdTree& tree) {
-    output.put(KdTreeFrame{tree.bounds, tree.maxDepth});
-    output.putVector(tree.nodes);
-    output.putVector(tree.primIndices);
-}
-
 // The student's traversal of a tree the grader made by hand (the traversal's truth table), with
 // the primitives each closest-hit query tested, in order.
 void runKdWalk(ByteReader& input, ByteWriter& output, WorkerState& state) {
     state.scene = readScene(input);
     state.primitives = std::make_unique<PrimitiveSet>(state.scene);
-    KdTree tree = readTree(input);
+    KdTree tree = readKdTree(input, state.primitives->size());
     auto query = static_cast<QueryKind>(input.get<uint8_t>());
     std::vector<uint32_t> tested;
     for (const Ray& ray : input.getVector<Ray>(kMaxCalls)) {
@@ -130,16 +115,24 @@ void runKdBuild(ByteReader& input, ByteWriter& output, WorkerState& state) {
     // and report its own state (not started, or wrong on an empty tree).
     KdTree& tree = state.structure.emplace<KdTree>();
     tree = function == KdBuildFunction::NlogN ? buildKdTreeNlogN(boxes, options) : buildKdTree(boxes, options);
-    putTree(output, tree);
+    writeKdTree(output, tree);
+}
+
+void answerKdQueries(const KdTree& tree, const PrimitiveSet& primitives, ByteReader& input, ByteWriter& output) {
+    QueryRequest request = readQueryRequest(input);
+    output.putVector(answerRays(
+        primitives, request.rays, request.kind == QueryKind::Occluded, [&](Traversal& t) { return occludedKdTree(tree, t); },
+        [&](Traversal& t, Hit& hit) { return intersectKdTree(tree, t, hit); }));
 }
 
 void runKdQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
-    const KdTree& tree = builtStructure<KdTree>(state);
-    auto query = static_cast<QueryKind>(input.get<uint8_t>());
-    auto rays = input.getVector<Ray>(kMaxItems);
-    output.putVector(answerRays(
-        *state.primitives, rays, query == QueryKind::Occluded, [&](Traversal& t) { return occludedKdTree(tree, t); },
-        [&](Traversal& t, Hit& hit) { return intersectKdTree(tree, t, hit); }));
+    answerKdQueries(builtStructure<KdTree>(state), *state.primitives, input, output);
+}
+
+// The traversal on a KD-tree the grader built (given_structure.h), not the one the build made.
+void runKdGivenQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
+    const PrimitiveSet& primitives = builtPrimitives(state);
+    answerKdQueries(readKdTree(input, primitives.size()), primitives, input, output);
 }
 
 void runBspBuild(ByteReader& input, ByteWriter& output, WorkerState& state) {
@@ -167,8 +160,8 @@ const TaskRegistration registration{{kTaskKdSahCost, runKdSahCost},     {kTaskKd
                                     {kTaskKdClassify, runKdClassify},   {kTaskKdMaxDepth, runKdMaxDepth},
                                     {kTaskKdDecide, runKdDecide},       {kTaskKdChildOrder, runKdChildOrder},
                                     {kTaskKdWalk, runKdWalk},           {kTaskKdBuild, runKdBuild},
-                                    {kTaskKdQuery, runKdQuery},         {kTaskBspBuild, runBspBuild},
-                                    {kTaskBspQuery, runBspQuery}};
+                                    {kTaskKdQuery, runKdQuery},         {kTaskKdGivenQuery, runKdGivenQuery},
+                                    {kTaskBspBuild, runBspBuild},       {kTaskBspQuery, runBspQuery}};
 
 }  // namespace
 

@@ -17,6 +17,7 @@ inline constexpr const char* kTaskOctreeFirstNode = "octree-first-node";  // [Fi
 inline constexpr const char* kTaskOctreeNextNode = "octree-next-node";    // [NextNodeCall] -> per call i32
 inline constexpr const char* kTaskOctreeBuild = "octree-build";  // scene, OctreeOptions -> Bounds3f root, [OctreeNode], [u32]
 inline constexpr const char* kTaskOctreeQuery = "octree-query";  // u8 QueryKind, [Ray] -> [RawQuery]
+inline constexpr const char* kTaskOctreeGivenQuery = "octree-given-query";  // octree (structure_codec.h), u8 QueryKind, [Ray] -> [RawQuery]
 // The closest-hit traversal again, listing the leaves it enters (Traversal::enterLeaf), in order.
 inline constexpr const char* kTaskOctreeLeaves = "octree-leaves";  // [Ray] -> per ray u32 n, u32 node[n]
 

@@ -2,6 +2,7 @@
 // walk, a whole build and traversals of the octree that build produced.
 #include "framework/interface/a4_octree.h"
 #include "grader/scene_codec.h"
+#include "grader/structure_codec.h"
 #include "grader/worker/octree_inputs.h"
 #include "grader/worker/query_answers.h"
 #include "grader/worker/worker_tasks.h"
@@ -66,19 +67,24 @@ void runBuild(ByteReader& input, ByteWriter& output, WorkerState& state) {
     state.primitives = std::make_unique<PrimitiveSet>(state.scene);
     Octree& octree = state.structure.emplace<Octree>();  // queries after a build that threw see an empty octree
     octree = buildOctree(OctreeInput{state.primitives->allBounds(), state.primitives->allTriangles()}, options);
-    output.put(octree.root);
-    output.putVector(octree.nodes);
-    output.putVector(octree.primIndices);
+    writeOctree(output, octree);
+}
+
+void answerOctreeQueries(const Octree& octree, const PrimitiveSet& primitives, ByteReader& input, ByteWriter& output) {
+    QueryRequest request = readQueryRequest(input);
+    output.putVector(answerRays(
+        primitives, request.rays, request.kind == QueryKind::Occluded, [&](Traversal& t) { return occludedOctree(octree, t); },
+        [&](Traversal& t, Hit& hit) { return intersectOctree(octree, t, hit); }));
 }
 
 void runQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
-    const Octree& octree = builtStructure<Octree>(state);
-    auto query = static_cast<QueryKind>(input.get<uint8_t>());
-    auto rays = input.getVector<Ray>(kMaxRays);
-    auto answers = answerRays(
-        *state.primitives, rays, query == QueryKind::Occluded, [&](Traversal& t) { return occludedOctree(octree, t); },
-        [&](Traversal& t, Hit& hit) { return intersectOctree(octree, t, hit); });
-    output.putVector(answers);
+    answerOctreeQueries(builtStructure<Octree>(state), *state.primitives, input, output);
+}
+
+// The traversal on an octree the grader built (given_structure.h), not the one the build made.
+void runGivenQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
+    const PrimitiveSet& primitives = builtPrimitives(state);
+    answerOctreeQueries(readOctree(input, primitives.size()), primitives, input, output);
 }
 
 // The visit-order test judges these lists: the leaves in the order the walk entered them.
@@ -94,7 +100,8 @@ const TaskRegistration registration{{kTaskOctreeRootBox, runRootBox},     {kTask
                                     {kTaskOctreeMirror, runMirror},         {kTaskOctreeRootSpan, runRootSpan},
                                     {kTaskOctreeMid, runMid},               {kTaskOctreeFirstNode, runFirstNode},
                                     {kTaskOctreeNextNode, runNextNode},     {kTaskOctreeBuild, runBuild},
-                                    {kTaskOctreeQuery, runQuery},           {kTaskOctreeLeaves, runLeaves}};
+                                    {kTaskOctreeQuery, runQuery},           {kTaskOctreeLeaves, runLeaves},
+                                    {kTaskOctreeGivenQuery, runGivenQuery}};
 
 }  // namespace
 

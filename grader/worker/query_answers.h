@@ -11,6 +11,18 @@
 
 namespace rtlab::grader::worker {
 
+// What a query phase asks after its structure (if it brings one): u8 QueryKind, [Ray].
+struct QueryRequest {
+    QueryKind kind;
+    std::vector<Ray> rays;
+};
+
+inline QueryRequest readQueryRequest(ByteReader& input) {
+    auto kind = static_cast<QueryKind>(input.get<uint8_t>());
+    if (kind != QueryKind::Closest && kind != QueryKind::Occluded && kind != QueryKind::Recursive) throw WireError("bad query kind");
+    return {kind, input.getVector<Ray>(uint64_t(1) << 24)};
+}
+
 // Occluded queries answer prim = 1 or 0; closest-hit ones the primitive (kNoHit on a miss) and
 // t. `occludes(traversal)` and `closest(traversal, hit)` call the student's traversal.
 template <typename Occludes, typename Closest>

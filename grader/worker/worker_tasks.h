@@ -34,6 +34,12 @@ const T& builtStructure(const WorkerState& state) {
     return *built;
 }
 
+// The primitives of the last build phase's scene, for tasks that bring their own structure.
+inline const PrimitiveSet& builtPrimitives(const WorkerState& state) {
+    if (!state.primitives) throw WireError("a query before the build");
+    return *state.primitives;
+}
+
 using Task = void (*)(ByteReader& input, ByteWriter& output, WorkerState& state);
 
 struct NamedTask {
