@@ -4,12 +4,12 @@
 // `rtlab grade merge` joins per-student reports into the CSV.
 #include "cli/commands.h"
 #include "framework/core/error.h"
-#include "grader/assignment_registry.h"
-#include "grader/batch_grading.h"
-#include "grader/grades_csv.h"
-#include "grader/grading_session.h"
-#include "grader/rubric.h"
-#include "grader/submission_grading.h"
+#include "grader/engine/assignment_registry.h"
+#include "grader/engine/batch_grading.h"
+#include "grader/engine/grades_csv.h"
+#include "grader/engine/grading_session.h"
+#include "grader/engine/rubric.h"
+#include "grader/engine/submission_grading.h"
 
 #include <cstdio>
 #include <filesystem>

@@ -6,7 +6,7 @@
 #include "cli/commands.h"
 #include "framework/core/error.h"
 #include "framework/external/temporary_directory.h"
-#include "grader/process_runner.h"
+#include "grader/engine/process_runner.h"
 
 #include <filesystem>
 #include <iostream>

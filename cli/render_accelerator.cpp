@@ -1,7 +1,7 @@
 #include "cli/render_accelerator.h"
 
 #include "framework/core/error.h"
-#include "grader/untrusted_text.h"
+#include "framework/core/untrusted_text.h"
 
 namespace rtlab::cli {
 
@@ -16,7 +16,7 @@ std::unique_ptr<Accelerator> buildRenderAccelerator(AcceleratorSpec& spec, bool 
         // fallback uses itself, and a0 is under every accelerator.
         if (specGiven || spec.name == kRenderFallbackAccelerator || e.stub.rfind("a2 ", 0) != 0) throw;
         // The stub's name comes from the student's build of the stubs: escaped like every
-        // other message (grader/untrusted_text.h).
+        // other message (framework/core/untrusted_text.h).
         notes << "rtlab: the default accelerator " << spec.name << " needs "
               << grader::escapeUntrusted(e.stub, grader::TextLayout::OneLine)
               << ", not implemented yet; rendering with --accel " << kRenderFallbackAccelerator

@@ -1,6 +1,6 @@
 #include "cli/commands.h"
 #include "framework/core/error.h"
-#include "grader/untrusted_text.h"
+#include "framework/core/untrusted_text.h"
 
 #include <iostream>
 #include <string>

@@ -4,7 +4,7 @@
 // is odd: then the first half of the rest is the manifest, unchecked, and the second half structures.json.
 #include "framework/core/sha256.h"
 #include "fuzz/input_file.h"
-#include "grader/reference_data.h"
+#include "grader/engine/reference_data.h"
 
 #include <cstdlib>
 

@@ -2,7 +2,7 @@
 // test names so the loaded patterns are matched too.
 #include "fuzz/input_file.h"
 #include "fuzz/one_line_error.h"
-#include "grader/rubric.h"
+#include "grader/engine/rubric.h"
 
 #include <cmath>
 #include <cstdlib>

@@ -1,15 +1,15 @@
 // libFuzzer target: what the grader reads from a worker, which is hostile: the record stream of
-// its result pipe (WorkerConversation, grader/worker_conversation.h) and the payloads of its
+// its result pipe (WorkerConversation, grader/engine/worker_conversation.h) and the payloads of its
 // verdicts decoded with ByteReader into the result types the grader scores: a BVH, which
 // the grader then checks itself (checkBvhStructure, graderSahCost), and per-ray answers.
 //
 // Input: byte 0 sets the phases of the request (1 + byte % 8), byte 1 the size of the chunks
 // (1 + byte) in which the rest, the pipe's bytes, arrives.
 #include "framework/core/bounds.h"
-#include "grader/bvh_structure.h"
-#include "grader/wire_format.h"
-#include "grader/worker/task_inputs.h"
-#include "grader/worker_conversation.h"
+#include "grader/a1_bvh/bvh_structure.h"
+#include "grader/wire/wire_format.h"
+#include "grader/wire/task_inputs.h"
+#include "grader/engine/worker_conversation.h"
 
 #include <cstdlib>
 #include <numeric>
@@ -29,7 +29,7 @@ const std::vector<Bounds3f>& primitiveBounds() {
     return bounds;
 }
 
-// As the BVH tests read a build's results (grader/bvh_tests.cpp): bounded lists, then the
+// As the BVH tests read a build's results (grader/a1_bvh/bvh_tests.cpp): bounded lists, then the
 // grader's own checks of the structure, which must hold against any bytes.
 void decodeBvh(ByteReader& in) {
     size_t primCount = primitiveBounds().size();

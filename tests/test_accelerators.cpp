@@ -10,8 +10,8 @@
 #include "framework/core/pcg32.h"
 #include "framework/interface/a3_grid.h"
 #include "framework/scene/icosphere_mesh.h"
-#include "grader/octree_oracle.h"
-#include "grader/test_scenes.h"
+#include "grader/a4_octree/octree_oracle.h"
+#include "grader/kit/test_scenes.h"
 
 #include <doctest/doctest.h>
 

@@ -7,8 +7,8 @@
 //
 // Mutants are made by text replacement in the solution files, so a solution edit that removes a
 // replaced text fails here loudly instead of silently grading the unmutated reference.
-#include "grader/assignment_registry.h"
-#include "grader/grading_report.h"
+#include "grader/engine/assignment_registry.h"
+#include "grader/engine/grading_report.h"
 
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>

@@ -8,7 +8,7 @@
 #include "framework/interface/a3_grid.h"
 #include "framework/scene/benchmark_rays.h"
 #include "framework/scene/benchmark_scenes.h"
-#include "grader/test_scenes.h"
+#include "grader/kit/test_scenes.h"
 #include "tests/fetched_models.h"
 
 #include <doctest/doctest.h>

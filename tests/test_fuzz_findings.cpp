@@ -4,7 +4,7 @@
 #include "framework/core/error.h"
 #include "framework/external/reference_manifest.h"
 #include "framework/scene/gltf_loader.h"
-#include "grader/rubric.h"
+#include "grader/engine/rubric.h"
 
 #include <doctest/doctest.h>
 

@@ -8,9 +8,15 @@
 #include "framework/interface/a4_octree.h"
 #include "framework/interface/a5_kdtree.h"
 #include "framework/oracle/oracle.h"
-#include "grader/accelerator_checks.h"
-#include "grader/given_structures.h"
-#include "grader/structure_codec.h"
+#include "grader/a1_bvh/given_bvh.h"
+#include "grader/a1_bvh/wire/bvh_codec.h"
+#include "grader/a3_grid/given_grid.h"
+#include "grader/a3_grid/wire/grid_codec.h"
+#include "grader/a4_octree/given_octree.h"
+#include "grader/a4_octree/wire/octree_codec.h"
+#include "grader/a5_kdtree/given_kdtree.h"
+#include "grader/a5_kdtree/wire/kdtree_codec.h"
+#include "grader/kit/accelerator_checks.h"
 
 #include <doctest/doctest.h>
 

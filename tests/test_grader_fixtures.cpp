@@ -1,8 +1,8 @@
 // The grader's fixtures (grader/fixtures/, docs/grading.md "Fixtures"): hostile and broken
 // submissions, each graded through `rtlab grade --submissions` exactly as an instructor would,
 // must get the verdict grader/fixtures/expectations.json names and no point they should not.
-#include "grader/compile_sandbox.h"
-#include "grader/grading_report.h"
+#include "grader/engine/compile_sandbox.h"
+#include "grader/engine/grading_report.h"
 
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>

@@ -4,7 +4,7 @@
 // inputs that no plane can split.
 #include "framework/accel/primitive_set.h"
 #include "framework/interface/a5_kdtree.h"
-#include "grader/test_scenes.h"
+#include "grader/kit/test_scenes.h"
 
 #include <doctest/doctest.h>
 

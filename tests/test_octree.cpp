@@ -10,12 +10,12 @@
 #include "framework/render/renderer.h"
 #include "framework/scene/camera.h"
 #include "framework/scene/icosphere_mesh.h"
-#include "grader/octree_cases.h"
-#include "grader/octree_oracle.h"
-#include "grader/octree_structure.h"
-#include "grader/octree_visit_order.h"
-#include "grader/stress_cases.h"
-#include "grader/test_scenes.h"
+#include "grader/a4_octree/octree_cases.h"
+#include "grader/a4_octree/octree_oracle.h"
+#include "grader/a4_octree/octree_structure.h"
+#include "grader/a4_octree/octree_visit_order.h"
+#include "grader/kit/stress_cases.h"
+#include "grader/kit/test_scenes.h"
 
 #include <doctest/doctest.h>
 

@@ -1,6 +1,6 @@
-// A file a submission lacks comes from the committed stubs (grader/pristine_stubs.h): in a git
+// A file a submission lacks comes from the committed stubs (grader/engine/pristine_stubs.h): in a git
 // checkout from HEAD, whatever the working tree holds; in an archive, from its assignments/.
-#include "grader/pristine_stubs.h"
+#include "grader/engine/pristine_stubs.h"
 
 #include <doctest/doctest.h>
 

@@ -3,10 +3,10 @@
 // (JSON parses, JUnit XML passes xmllint against grader/schemas/junit-10.xsd, HTML is valid
 // UTF-8, no raw ESC reaches the terminal, the grades CSV merged from the JSON report is valid
 // UTF-8 with the submission's hostile folder name escaped) and no score changes.
-#include "grader/grades_csv.h"
-#include "grader/grading_report.h"
-#include "grader/rubric.h"
-#include "grader/untrusted_text.h"
+#include "grader/engine/grades_csv.h"
+#include "grader/engine/grading_report.h"
+#include "grader/engine/rubric.h"
+#include "framework/core/untrusted_text.h"
 
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>

@@ -1,8 +1,8 @@
 // The rubric's scoring rules (docs/grading.md, "The rubric"): scores rounded to its precision,
 // and only the tests the grader defines earn points.
 #include "framework/core/error.h"
-#include "grader/grading_report.h"
-#include "grader/rubric.h"
+#include "grader/engine/grading_report.h"
+#include "grader/engine/rubric.h"
 
 #include <doctest/doctest.h>
 

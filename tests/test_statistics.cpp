@@ -1,6 +1,6 @@
 // grader/statistics: the tails of the chi-square and normal distributions against printed
 // tables, the Sidak level, pooling in Pearson's test, and the log-log slope.
-#include "grader/statistics.h"
+#include "grader/kit/statistics.h"
 
 #include <doctest/doctest.h>
 

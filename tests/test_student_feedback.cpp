@@ -10,8 +10,8 @@
 #include "framework/render/image_compare.h"
 #include "framework/render/image_io.h"
 #include "framework/scene/gltf_loader.h"
-#include "grader/grading_report.h"
-#include "grader/rubric.h"
+#include "grader/engine/grading_report.h"
+#include "grader/engine/rubric.h"
 #include "tests/cli_runner.h"
 #include "tests/output_dirs.h"
 

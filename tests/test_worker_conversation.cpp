@@ -1,7 +1,7 @@
-// The grader's parser of what a worker sends (grader/worker_conversation.h): a well-behaved
+// The grader's parser of what a worker sends (grader/engine/worker_conversation.h): a well-behaved
 // worker's records give one start and one verdict per phase, however the bytes are split;
 // every record out of turn is malformed, and stays so.
-#include "grader/worker_conversation.h"
+#include "grader/engine/worker_conversation.h"
 
 #include <doctest/doctest.h>
 

@@ -3,8 +3,8 @@
 #pragma once
 
 #include "framework/interface/traversal.h"
-#include "grader/wire_format.h"
-#include "grader/worker/task_inputs.h"
+#include "grader/wire/wire_format.h"
+#include "grader/wire/task_inputs.h"
 
 #include <algorithm>
 #include <vector>

@@ -2,8 +2,8 @@
 // median BVH, a3's grid), for the image tests.
 #include "framework/accel/accelerator.h"
 #include "framework/render/renderer.h"
-#include "grader/scene_codec.h"
-#include "grader/worker/task_inputs.h"
+#include "grader/wire/scene_codec.h"
+#include "grader/wire/task_inputs.h"
 #include "grader/worker/worker_tasks.h"
 
 #include <algorithm>

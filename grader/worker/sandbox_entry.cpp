@@ -10,7 +10,7 @@
 //
 // Built with -fno-stack-protector (see grader/CMakeLists.txt): the stack guard lives in
 // thread-local storage, which the C runtime has not set up yet.
-#include "grader/worker/worker_protocol.h"
+#include "grader/wire/worker_protocol.h"
 
 #include <asm/unistd.h>
 #include <csignal>

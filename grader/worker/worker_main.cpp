@@ -3,7 +3,7 @@
 // (worker_protocol.h). Nothing here is trusted by the grader: a student can replace any of
 // it, and all it could gain is results the grader validates anyway.
 #include "framework/core/error.h"
-#include "grader/worker/worker_protocol.h"
+#include "grader/wire/worker_protocol.h"
 #include "grader/worker/worker_tasks.h"
 
 #include <cerrno>

@@ -1,6 +1,6 @@
 #include "grader/worker/worker_tasks.h"
 
-#include "grader/worker/task_inputs.h"
+#include "grader/wire/task_inputs.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -7,7 +7,7 @@
 
 #include "framework/accel/primitive_set.h"
 #include "framework/scene/scene.h"
-#include "grader/wire_format.h"
+#include "grader/wire/wire_format.h"
 
 #include <any>
 #include <initializer_list>

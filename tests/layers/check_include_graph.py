@@ -4,10 +4,17 @@ know each other do not.
 
 Every #include "a/b/c.h" in a tracked .cpp or .h file is an edge from the including file's
 layer to the included file's layer. Layers are framework/<part> (core, interface, scene, accel,
-oracle, sampling, render, external, pov, blender), grader (with grader/worker), cli, fast, bench, fuzz, assignments,
-solutions and tests. ALLOWED lists, for each layer, the layers it may include besides itself;
-any other edge is printed as FILE:LINE and fails the test, and so does a file in a layer the
-table does not know (a new folder must say where it sits).
+oracle, sampling, render, external, pov, blender); the grader's engine, kit, wire and worker,
+each assignment's folder and its worker/, and grader/ itself (the registry); cli, fast, bench,
+fuzz, assignments, solutions and tests. ALLOWED lists, for each layer, the layers it may include
+besides itself; any other edge is printed as FILE:LINE and fails the test, and so does a file
+in a layer the table does not know (a new folder must say where it sits).
+
+An assignment's folder in grader/ (grader/a3_grid) needs no line in the table: it may use the
+kit, the wire format and the engine's session API, its own wire/ (its tasks' names, inputs and
+structures on the wire, which both sides compile) and the folders of the assignments its
+registry line says it builds on (grader/assignment_registry.cpp); its worker/ (the tasks the
+worker runtime runs) only the framework, the wire formats and the worker runtime.
 
 Usage: check_include_graph.py SOURCE_DIR
 """
@@ -38,32 +45,68 @@ ALLOWED = {
     # Student code and the reference solutions: only the contract.
     "assignments": {"framework/core", "framework/interface"},
     "solutions": {"framework/core", "framework/interface"},
-    # Never any assignment code, the fast paths or the command line.
-    "grader": FRAMEWORK | {"grader/worker"},
-    "grader/worker": FRAMEWORK | {"grader"},
+    # The grader never includes assignment code, the fast paths or the command line. What
+    # both the grader and a worker speak: the byte format, scenes and structures on the wire.
+    "grader/wire": {"framework/core", "framework/interface", "framework/scene"},
+    # The worker runtime: the sandbox entry, the task registry, the render task.
+    "grader/worker": FRAMEWORK | {"grader/wire"},
+    # The engine names no assignment: session, isolation, process runner, batch, reports,
+    # rubric; it reaches the assignments through the registry's header alone.
+    "grader/engine": FRAMEWORK | {"grader/wire"},
+    # Generic checks: truth tables, the hit judge, ray sets, scenes, structure tests, images,
+    # statistics. Never an assignment.
+    "grader/kit": FRAMEWORK | {"grader/wire", "grader/engine"},
+    # The registry: the one file that names every assignment.
+    "grader": None,
     "fast": FRAMEWORK,
-    "cli": FRAMEWORK | {"grader", "grader/worker"},
+    "cli": FRAMEWORK | {"grader/engine", "grader/wire"},
     "bench": FRAMEWORK | {"fast"},
-    "fuzz": FRAMEWORK | {"grader", "grader/worker"},
+    "fuzz": FRAMEWORK | {"grader/engine", "grader/wire", "grader/kit", "grader/worker", "grader/a1_bvh"},
     # The test suite and the hostile fixtures may reach anything.
     "tests": None,
     "grader/fixtures": None,
 }
 
 
+ASSIGNMENT = re.compile(r"a\d+_[a-z0-9_]+$")
+
+
 def layer_of(path):
     parts = path.split("/")
     if parts[0] == "framework" and len(parts) > 2:
         return "framework/" + parts[1]
-    if parts[0] == "grader" and len(parts) > 2 and parts[1] in ("worker", "fixtures"):
+    if parts[0] == "grader" and len(parts) > 2:
+        if ASSIGNMENT.match(parts[1]) and len(parts) > 3 and parts[2] in ("wire", "worker"):
+            return "grader/" + parts[1] + "/" + parts[2]
         return "grader/" + parts[1]
     return parts[0] if len(parts) > 1 else None
+
+
+def assignment_rules(source):
+    """The layers of each assignment folder from the registry's lines: {"a2", "...", a2Groups,
+    {"a0_intersect", "a1_bvh", "a2_sah"}} lets grader/a2_sah include grader/a1_bvh."""
+    rules = {}
+    with open(os.path.join(source, "grader/assignment_registry.cpp")) as f:
+        for line in f:
+            m = re.search(r'\{"a\d+",.*\{([^{}]*)\}\}', line)
+            if not m:
+                continue
+            folders = re.findall(r'"([^"]+)"', m.group(1))
+            own = folders[-1]
+            built_on = {"grader/" + f + part for f in folders[:-1] if os.path.isdir(os.path.join(source, "grader", f))
+                        for part in ("", "/wire")}
+            mine = "grader/" + own
+            rules[mine] = FRAMEWORK | {"grader/wire", "grader/engine", "grader/kit", mine + "/wire"} | built_on
+            rules[mine + "/wire"] = {"framework/core", "framework/interface", "framework/scene", "grader/wire"}
+            rules[mine + "/worker"] = FRAMEWORK | {"grader/wire", "grader/worker", mine + "/wire"}
+    return rules
 
 
 def main():
     source = sys.argv[1]
     files = subprocess.run(["git", "-C", source, "ls-files", "*.cpp", "*.h"], capture_output=True, text=True,
                            check=True).stdout.split()
+    allowed_by_layer = dict(ALLOWED, **assignment_rules(source))
     problems = []
     include = re.compile(r'\s*#\s*include\s+"([^"]+)"')
     intrinsics = re.compile(r'\s*#\s*include\s+<(\w*intrin\.h|arm_neon\.h)>')
@@ -71,10 +114,10 @@ def main():
         layer = layer_of(path)
         if layer is None:
             continue
-        if layer not in ALLOWED:
-            problems.append(f"{path}:1: layer {layer} is not in the include-graph table")
+        if layer not in allowed_by_layer:
+            problems.append(f"{path}:1: layer {layer} is not in the include-graph table (an assignment folder needs its registry line)")
             continue
-        allowed = ALLOWED[layer]
+        allowed = allowed_by_layer[layer]
         with open(os.path.join(source, path), errors="replace") as f:
             for number, line in enumerate(f, 1):
                 simd = intrinsics.match(line)

@@ -1,0 +1,167 @@
+// a6's functions on the grader's inputs: units, solid angles and the sphere integral one call at
+// a time; samplers and estimators `count` times on uniform numbers drawn here from the call's
+// seed (PCG32, stream = the call's index), returning every sample raw. The estimators' shadow
+// and emitter rays go to the exact oracle, so a6 is graded without any other assignment's code.
+#include "framework/core/pcg32.h"
+#include "framework/interface/a6_radiometry.h"
+#include "framework/oracle/oracle.h"
+#include "framework/render/spawn_ray.h"
+#include "framework/scene/emitters.h"
+#include "grader/wire/scene_codec.h"
+#include "grader/a6_radiometry/wire/radiometry_inputs.h"
+#include "grader/worker/worker_tasks.h"
+
+#include <cmath>
+#include <limits>
+
+namespace rtlab::grader::worker {
+namespace {
+
+constexpr uint64_t kMaxCalls = uint64_t(1) << 16;
+constexpr int32_t kMaxIntegralSteps = 1 << 14;
+
+double callUnit(const UnitCall& c) {
+    switch (c.function) {
+        case UnitFunction::EnergyFromPower: return energyFromPower(c.a, c.b);
+        case UnitFunction::PowerFromEnergy: return powerFromEnergy(c.a, c.b);
+        case UnitFunction::IntensityFromPower: return intensityFromPower(c.a);
+        case UnitFunction::PowerFromIntensity: return powerFromIntensity(c.a);
+        case UnitFunction::IrradianceFromIntensity: return irradianceFromIntensity(c.a, c.b, c.c);
+        case UnitFunction::RadianceFromPower: return radianceFromPower(c.a, c.b);
+        case UnitFunction::PowerFromRadiance: return powerFromRadiance(c.a, c.b);
+        case UnitFunction::IrradianceFromRadiance: return irradianceFromRadiance(c.a);
+        case UnitFunction::LumensFromWatts: return lumensFromWatts(c.a);
+        case UnitFunction::WattsFromLumens: return wattsFromLumens(c.a);
+    }
+    throw WireError("an unknown unit function");
+}
+
+double callSolidAngle(const SolidAngleCall& c) {
+    switch (c.function) {
+        case SolidAngleFunction::Cone: return solidAngleOfCone(c.x);
+        case SolidAngleFunction::Sphere: return solidAngleOfSphere(c.x, c.y);
+        case SolidAngleFunction::Triangle: return solidAngleOfTriangle(c.p, c.a, c.b, c.c);
+        case SolidAngleFunction::Rectangle: return solidAngleOfRectangle(c.p, c.a, c.b, c.c);
+    }
+    throw WireError("an unknown solid angle function");
+}
+
+std::function<double(double, double)> integrand(Integrand which) {
+    switch (which) {
+        case Integrand::One: return [](double, double) { return 1.0; };
+        case Integrand::PositiveCosine: return [](double theta, double) { return std::max(0.0, std::cos(theta)); };
+        case Integrand::OnePlusCosPhi: return [](double, double phi) { return 1.0 + std::cos(phi); };
+    }
+    throw WireError("an unknown integrand");
+}
+
+SampleResult sample(const SamplerCall& c, Vec2 u) {
+    switch (c.sampler) {
+        case Sampler::UniformSphere: { auto s = sampleUniformSphere(u); return {s.direction, s.pdf}; }
+        case Sampler::UniformHemisphere: { auto s = sampleUniformHemisphere(u); return {s.direction, s.pdf}; }
+        case Sampler::CosineHemisphere: { auto s = sampleCosineHemisphere(u); return {s.direction, s.pdf}; }
+        case Sampler::UniformCone: { auto s = sampleUniformCone(u, c.cosThetaMax); return {s.direction, s.pdf}; }
+        case Sampler::UniformTriangle: { auto s = sampleUniformTriangle(c.p0, c.p1, c.p2, u); return {s.point, s.pdf}; }
+        case Sampler::SphericalTriangle: {
+            auto s = sampleSphericalTriangle(c.p, c.p0, c.p1, c.p2, u);
+            return {s.direction, s.pdf};
+        }
+    }
+    throw WireError("an unknown sampler");
+}
+
+Vec2 uniformPair(Pcg32& rng) {
+    float x = rng.uniform();
+    return Vec2(x, rng.uniform());
+}
+
+// SceneRays answered exactly: the grader's shading points float in space (no surface under
+// them), so rays start at the point itself and only the shadow-ray trims of the renderer apply.
+class OracleRays : public SceneRays {
+public:
+    OracleRays(const Scene& scene, const Oracle& oracle, const Vec3& point, double reach)
+        : scene_(scene), oracle_(oracle), point_(point), reach_(reach) {}
+
+    bool visible(const Vec3& target) const override {
+        OracleRay ray{DVec3(point_), DVec3(target) - DVec3(point_), kShadowEpsilon, 1.0 - kShadowEpsilon};
+        return !oracle_.anyHit(ray);
+    }
+    Vec3 incomingEmission(const Vec3& direction) const override {
+        OracleRay ray{DVec3(point_), DVec3(direction) * reach_, kShadowEpsilon, std::numeric_limits<double>::infinity()};
+        OracleHit hit = oracle_.closestHit(ray);
+        return hit.hit ? emittedRadiance(scene_, hit.prim, Vec3(hit.normal), -direction) : Vec3(0.0f);
+    }
+
+private:
+    const Scene& scene_;
+    const Oracle& oracle_;
+    Vec3 point_;
+    double reach_;
+};
+
+Vec3 estimate(const EstimatorCall& c, Vec2 u, const SceneRays& rays) {
+    switch (c.estimator) {
+        case Estimator::PointLight: return estimatePointLight(c.point, c.pointLight, rays);
+        case Estimator::TriangleByArea: return estimateTriangleLightByArea(c.point, c.triangle, u, rays);
+        case Estimator::TriangleBySolidAngle: return estimateTriangleLightBySolidAngle(c.point, c.triangle, u, rays);
+        case Estimator::SphereByArea: return estimateSphereLightByArea(c.point, c.sphere, u, rays);
+        case Estimator::SphereBySolidAngle: return estimateSphereLightBySolidAngle(c.point, c.sphere, u, rays);
+        case Estimator::UniformHemisphere: return estimateByUniformHemisphere(c.point, u, rays);
+        case Estimator::CosineHemisphere: return estimateByCosineHemisphere(c.point, u, rays);
+    }
+    throw WireError("an unknown estimator");
+}
+
+void runUnits(ByteReader& input, ByteWriter& output, WorkerState&) {
+    for (const UnitCall& call : input.getVector<UnitCall>(kMaxCalls)) output.put<double>(callUnit(call));
+}
+
+void runSolidAngles(ByteReader& input, ByteWriter& output, WorkerState&) {
+    for (const SolidAngleCall& call : input.getVector<SolidAngleCall>(kMaxCalls)) output.put<double>(callSolidAngle(call));
+}
+
+void runSphereIntegrals(ByteReader& input, ByteWriter& output, WorkerState&) {
+    for (const IntegralCall& call : input.getVector<IntegralCall>(kMaxCalls)) {
+        if (call.thetaSteps < 1 || call.phiSteps < 1 || call.thetaSteps > kMaxIntegralSteps || call.phiSteps > kMaxIntegralSteps)
+            throw WireError("bad integration steps");
+        output.put<double>(integrateOverSphere(integrand(call.integrand), call.thetaSteps, call.phiSteps));
+    }
+}
+
+void runSamples(ByteReader& input, ByteWriter& output, WorkerState&) {
+    auto call = input.get<SamplerCall>();
+    if (call.count > kMaxSamplesPerCall) throw WireError("too many samples");
+    Pcg32 rng(call.seed, 0);
+    output.put<uint64_t>(call.count);
+    for (uint32_t i = 0; i < call.count; ++i) output.put(sample(call, uniformPair(rng)));
+}
+
+void runPdfConversions(ByteReader& input, ByteWriter& output, WorkerState&) {
+    for (const PdfCall& call : input.getVector<PdfCall>(kMaxCalls))
+        output.put<float>(areaToSolidAnglePdf(call.pdfArea, call.distanceSquared, call.cosThetaLight));
+}
+
+void runEstimates(ByteReader& input, ByteWriter& output, WorkerState& state) {
+    auto cases = input.get<uint64_t>();
+    if (cases > kMaxCalls) throw WireError("too many estimator cases");
+    for (uint64_t k = 0; k < cases; ++k) {
+        state.scene = readScene(input);
+        auto call = input.get<EstimatorCall>();
+        if (call.count > kMaxSamplesPerCall) throw WireError("too many samples");
+        Oracle oracle(state.scene);
+        Bounds3f bounds = state.scene.bounds();
+        bounds.extend(call.point.position);
+        OracleRays rays(state.scene, oracle, call.point.position, 2.0 * glm::length(bounds.diagonal()));
+        Pcg32 rng(call.seed, k);
+        output.put<uint64_t>(call.count);
+        for (uint32_t i = 0; i < call.count; ++i) output.put(estimate(call, uniformPair(rng), rays));
+    }
+}
+
+const TaskRegistration registration{{kTaskUnits, runUnits},         {kTaskSolidAngles, runSolidAngles},
+                                    {kTaskSphereIntegrals, runSphereIntegrals}, {kTaskSamples, runSamples},
+                                    {kTaskPdfConversions, runPdfConversions}, {kTaskEstimates, runEstimates}};
+
+}  // namespace
+
+}  // namespace rtlab::grader::worker

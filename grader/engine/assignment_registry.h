@@ -1,0 +1,27 @@
+// The one list of graded assignments. Adding an assignment is its folders (assignments/,
+// solutions/, its interface header, its grader tests and rubric part, its docs page) and one
+// line in grader/assignment_registry.cpp.
+#pragma once
+
+#include "grader/engine/test_group.h"
+
+#include <string>
+#include <vector>
+
+namespace rtlab::grader {
+
+struct Assignment {
+    std::string id;     // "a3": the prefix of its test names and rubric rules
+    std::string title;  // "uniform grid and 3D-DDA"
+    std::vector<TestGroup> (*groups)(GradingContext& context);
+    // The folders of assignments/ its tests call: its own and those it builds on (every
+    // structure's traversal calls a0's intersections).
+    std::vector<std::string> folders;
+};
+
+const std::vector<Assignment>& assignments();
+const Assignment* findAssignment(const std::string& id);
+// "a0, a1, a2, a3": for help texts and errors.
+std::string assignmentIds();
+
+}  // namespace rtlab::grader

@@ -1,0 +1,40 @@
+// One grading run (docs/grading.md): builds the test groups of the chosen assignments, runs
+// each in sandboxed workers (options.workerPath, which holds the code to grade; this process
+// links none), scores them in this process and applies the rubric.
+#pragma once
+
+#include "grader/engine/grading_report.h"
+#include "grader/engine/sandbox.h"
+#include "grader/engine/submission_build.h"
+#include "grader/engine/test_group.h"
+
+#include <string>
+#include <vector>
+
+namespace rtlab::grader {
+
+struct GradingOptions {
+    uint64_t seed = kDefaultSeed;
+    std::string sourceDir;   // repository root (scenes/, grader/rubric.json, grader/reference/)
+    std::string modelsDir;   // bunny.gltf
+    std::string workDir;     // renders and heat maps
+    std::string rubricPath;  // default sourceDir/grader/rubric.json
+    std::vector<std::string> assignments;  // empty: every registered one (assignment_registry.h)
+    std::vector<std::string> tests;        // glob patterns of test names (rubric.h's globMatches); empty: all
+    std::string workerPath;  // the worker executable holding the code to grade (grader/worker/)
+    std::string unavailableWorker;  // when set, no worker runs and every phase fails with this reason
+    SandboxLimits limits;
+    CompileLimits compile;   // for a submission's build
+    bool writeReference = false;  // record SAH costs and work per ray into grader/reference/
+    bool progress = true;         // progress lines on stderr when it is a terminal
+    std::string implementation;   // what is graded, for the reports
+};
+
+GradingReport gradeWorker(const GradingOptions& options);
+
+// Merges results that share a name (one per scene) into one test: passed when all passed,
+// not started when any part is, otherwise failed with the first failure's reason; the
+// fraction is the mean, so each scene carries an equal share of the points.
+void mergeSameNamed(std::vector<TestResult>& results);
+
+}  // namespace rtlab::grader

@@ -1,0 +1,56 @@
+#include "grader/engine/pristine_stubs.h"
+
+#include "framework/core/error.h"
+#include "grader/engine/process_runner.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace rtlab::grader {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kGit = "/usr/bin/git";
+
+std::string git(const std::string& sourceDir, std::vector<std::string> arguments) {
+    std::vector<std::string> argv = {kGit, "-c", "safe.directory=" + sourceDir, "-C", sourceDir};
+    argv.insert(argv.end(), arguments.begin(), arguments.end());
+    ProcessLimits limits;
+    limits.wallSeconds = 30;
+    limits.outputBytes = size_t(16) << 20;
+    ProcessResult r = runProcess(argv, {"PATH=/usr/bin", "HOME=/nonexistent", "GIT_CONFIG_NOSYSTEM=1"}, limits);
+    if (!r.succeeded() || r.droppedBytes > 0)
+        throw Error(sourceDir + ": cannot read the committed stubs with git (" + (r.failure.empty() ? "output too long" : r.failure) + ")");
+    return r.output;
+}
+
+bool isStubSource(const std::string& path) {
+    std::string extension = fs::path(path).extension().string();
+    return extension == ".cpp" || extension == ".h";
+}
+
+}  // namespace
+
+std::map<std::string, std::string> pristineStubs(const std::string& sourceDir) {
+    std::map<std::string, std::string> stubs;
+    if (fs::exists(fs::path(sourceDir) / ".git")) {
+        std::istringstream names(git(sourceDir, {"ls-tree", "-r", "--name-only", "HEAD", "--", "assignments/"}));
+        for (std::string name; std::getline(names, name);)
+            if (isStubSource(name)) stubs[name] = git(sourceDir, {"show", "HEAD:" + name});
+    } else {
+        fs::path root = fs::path(sourceDir) / "assignments";
+        if (!fs::is_directory(root)) throw Error(root.string() + ": no stubs to grade against");
+        for (const auto& entry : fs::recursive_directory_iterator(root)) {
+            std::string name = entry.path().lexically_relative(sourceDir).string();
+            if (!entry.is_regular_file() || !isStubSource(name)) continue;
+            std::ifstream in(entry.path(), std::ios::binary);
+            stubs[name] = std::string(std::istreambuf_iterator<char>(in), {});
+        }
+    }
+    if (stubs.empty()) throw Error(sourceDir + ": no committed stubs under assignments/");
+    return stubs;
+}
+
+}  // namespace rtlab::grader

@@ -1,0 +1,460 @@
+#include "grader/engine/sandbox.h"
+
+#include "framework/core/error.h"
+#include "grader/engine/system_call_filter.h"
+#include "grader/engine/worker_conversation.h"
+#include "grader/wire/worker_protocol.h"
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <grp.h>
+#include <optional>
+#include <poll.h>
+#include <sys/prctl.h>
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <sys/wait.h>
+#include <thread>
+#include <time.h>
+#include <unistd.h>
+
+namespace rtlab::grader {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using worker::RecordKind;
+
+constexpr size_t kMaxCapturedOutput = 4096;
+constexpr uint64_t kWorkerBaseMiB = 64;  // the worker's own code, stacks and the C runtime
+constexpr uid_t kNobody = 65534;
+// After the end of its request a worker has this long to say Done and exit.
+constexpr double kEndSeconds = 2.0;
+// A phase's limit is CPU time, and its wall-clock time may be this many times the limit: room
+// for a machine with four runnable processes per core.
+constexpr double kLoadAllowance = 4.0;
+
+std::string signalName(int sig) {
+    const char* abbreviation = sigabbrev_np(sig);
+    return abbreviation ? std::string("SIG") + abbreviation : "signal " + std::to_string(sig);
+}
+
+std::string formatSeconds(double s) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g", s);
+    return buffer;
+}
+
+Clock::duration seconds(double s) { return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s)); }
+
+// CPU time of a process and all its threads, live and ended, as the kernel counts it (in
+// nanoseconds, unlike the clock ticks of /proc/PID/stat).
+std::optional<double> processCpuSeconds(pid_t pid) {
+    clockid_t clock;
+    timespec now{};
+    if (clock_getcpuclockid(pid, &clock) != 0 || clock_gettime(clock, &now) != 0) return std::nullopt;
+    return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
+}
+
+// What runs in the forked child before the worker image replaces it: only grader code, and
+// only async-signal-safe steps after the filter is built. Never returns.
+[[noreturn]] void startWorker(const WorkerSpec& spec, int requestFd, int resultFd, int outputFd, uint64_t addressSpace, pid_t grader) {
+    int filterFd = -1;
+    try {
+        filterFd = exportSystemCallFilter(worker::kResultFd, getpid());
+    } catch (...) {
+        _exit(worker::kExitSandboxFailed);
+    }
+    // Descriptors 0..4 are the request, the output capture (1, 2), the results and the filter.
+    int moved[5];
+    for (int i = 0; i < 5; ++i) moved[i] = fcntl(std::array{requestFd, outputFd, outputFd, resultFd, filterFd}[i], F_DUPFD_CLOEXEC, 10);
+    for (int i = 0; i < 5; ++i)
+        if (moved[i] < 0 || dup2(moved[i], i) != i) _exit(worker::kExitSandboxFailed);
+    close_range(5, ~0u, 0);
+    // Opened while still the grader's user, so the worker runs wherever the build lives (a
+    // folder nobody may not enter, say); executing it by descriptor checks only the file.
+    int executable = open(spec.path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (executable < 0) _exit(worker::kExitSandboxFailed);
+
+    rlimit memory{addressSpace, addressSpace};
+    rlimit cpu{static_cast<rlim_t>(spec.limits.cpuSeconds), static_cast<rlim_t>(spec.limits.cpuSeconds + 1)};
+    rlimit none{0, 0};
+    rlimit files{8, 8};
+    if (setrlimit(RLIMIT_AS, &memory) != 0 || setrlimit(RLIMIT_CPU, &cpu) != 0 || setrlimit(RLIMIT_CORE, &none) != 0 ||
+        setrlimit(RLIMIT_FSIZE, &none) != 0 || setrlimit(RLIMIT_NOFILE, &files) != 0)
+        _exit(worker::kExitSandboxFailed);
+    // A grader running as root hands the worker to nobody: no file of the grader's is its own.
+    if (geteuid() == 0 && (setgroups(0, nullptr) != 0 || setgid(kNobody) != 0 || setuid(kNobody) != 0))
+        _exit(worker::kExitSandboxFailed);
+    prctl(PR_SET_PDEATHSIG, SIGKILL);  // after setuid, which clears it
+    if (getppid() != grader) _exit(worker::kExitSandboxFailed);  // the grader died before that
+    char name[] = "rtlab-worker";
+    char* argv[] = {name, nullptr};
+    char* envp[] = {nullptr};
+    char empty[] = "";
+    syscall(SYS_execveat, executable, empty, argv, envp, AT_EMPTY_PATH);
+    _exit(worker::kExitSandboxFailed);
+}
+
+// The grader's side of one worker: streams the phases' requests, reads records until the
+// worker is done, dies or overruns a deadline.
+class WorkerSession {
+public:
+    WorkerSession(const WorkerSpec& spec, std::span<const ChildPhase> phases, SandboxRun& run)
+        : spec_(spec), phases_(phases), run_(run), outcomes_(phases.size()), reported_(phases.size(), false) {}
+
+    // Runs phase 0 and then the phases in order.
+    void execute(std::vector<size_t> order) {
+        order_ = order;
+        conversation_.emplace(std::move(order));
+        int requestPipe[2], resultPipe[2], outputPipe[2];
+        if (pipe2(requestPipe, O_CLOEXEC) != 0 || pipe2(resultPipe, O_CLOEXEC) != 0 || pipe2(outputPipe, O_CLOEXEC) != 0)
+            throw Error(std::string("grader: cannot create a pipe: ") + std::strerror(errno));
+        uint64_t addressSpace = (kWorkerBaseMiB + uint64_t(spec_.limits.memoryMiB)) << 20;
+        for (size_t k : order_) addressSpace += 2 * phases_[k].input.size();
+        std::fflush(nullptr);
+        pid_t grader = getpid();
+        pid_t pid = fork();
+        if (pid < 0) throw Error(std::string("grader: cannot fork: ") + std::strerror(errno));
+        if (pid == 0) startWorker(spec_, requestPipe[0], resultPipe[1], outputPipe[1], addressSpace, grader);
+        close(requestPipe[0]);
+        close(resultPipe[1]);
+        close(outputPipe[1]);
+        pid_ = pid;
+        requestFd_ = requestPipe[1];
+        fcntl(requestFd_, F_SETFL, O_NONBLOCK);
+        queueRequest();
+        converse(resultPipe[0], outputPipe[0]);
+        if (requestFd_ >= 0) close(requestFd_);
+        close(resultPipe[0]);
+        close(outputPipe[0]);
+        judgeEnding(reap());
+    }
+
+    const std::vector<PhaseOutcome>& outcomes() const { return outcomes_; }
+    const std::vector<bool>& reported() const { return reported_; }
+    bool finished() const { return conversation_->done() && !overran_ && !malformed(); }
+
+private:
+    bool malformed() const { return conversation_->malformed(); }
+
+    // Queues the request of the conversation's current phase, or the end of the request after
+    // the last one. Each phase's deadline starts here and is set once: no record moves it.
+    void queueRequest() {
+        size_t step = conversation_->step();
+        if (step >= order_.size()) {
+            put<uint32_t>(worker::kEndOfRequest);
+            deadline_ = Clock::now() + seconds(kEndSeconds);
+            cpuAtPhase_.reset();  // the end has a wall-clock deadline only
+            return;
+        }
+        const ChildPhase& phase = phases_[order_[step]];
+        put<uint32_t>(static_cast<uint32_t>(order_[step]));
+        put<uint32_t>(static_cast<uint32_t>(phase.task.size()));
+        pendingRequest_.insert(pendingRequest_.end(), phase.task.begin(), phase.task.end());
+        put<uint64_t>(phase.input.size());
+        pendingRequest_.insert(pendingRequest_.end(), phase.input.begin(), phase.input.end());
+        phaseRequestedAt_ = Clock::now();
+        deadline_ = phaseRequestedAt_ + seconds(spec_.limits.wallSeconds);
+        cpuAtPhase_ = processCpuSeconds(pid_);
+    }
+
+    // Called at the deadline. The phase's limit is CPU time: on a loaded machine the worker
+    // waits for a core, and the wait is not the student's. So while the phase has used less
+    // CPU than its limit, the deadline moves to when it could have used it all, but never past
+    // kLoadAllowance times the limit of wall-clock time (a worker that sleeps or blocks).
+    bool phaseOverran() {
+        const double limit = spec_.limits.wallSeconds;
+        const Clock::time_point now = Clock::now();
+        auto cpu = processCpuSeconds(pid_);
+        if (!cpu || !cpuAtPhase_) return true;
+        double used = *cpu - *cpuAtPhase_;
+        Clock::time_point backstop = phaseRequestedAt_ + seconds(kLoadAllowance * limit);
+        if (used >= limit || now >= backstop) return true;
+        deadline_ = std::min(backstop, now + seconds(limit - used));
+        return false;
+    }
+
+    template <typename T>
+    void put(T value) {
+        const auto* p = reinterpret_cast<const uint8_t*>(&value);
+        pendingRequest_.insert(pendingRequest_.end(), p, p + sizeof value);
+    }
+
+    void converse(int resultFd, int outputFd) {
+        bool open[2] = {true, true};
+        std::vector<uint8_t> buffer(1 << 16);
+        while ((open[0] || open[1]) && !malformed() && !conversation_->done()) {
+            auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline_ - Clock::now()).count();
+            if (left <= 0) {
+                if (!phaseOverran()) continue;
+                overran_ = true;
+                return;
+            }
+            pollfd fds[3] = {{open[0] ? resultFd : -1, POLLIN, 0},
+                             {open[1] ? outputFd : -1, POLLIN, 0},
+                             {!pendingRequest_.empty() ? requestFd_ : -1, POLLOUT, 0}};
+            int ready = poll(fds, 3, static_cast<int>(std::min<long long>(left, 1000)));
+            if (ready < 0 && errno != EINTR) throw Error(std::string("grader: poll failed: ") + std::strerror(errno));
+            if (ready <= 0) continue;
+            if (fds[2].revents) writeRequest();
+            for (int i = 0; i < 2; ++i) {
+                if (!open[i] || !(fds[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+                ssize_t n = read(fds[i].fd, buffer.data(), buffer.size());
+                if (n < 0 && errno == EINTR) continue;
+                if (n <= 0) {
+                    open[i] = false;
+                    continue;
+                }
+                if (i == 0) {
+                    // Each verdict is answered before the records after it are read.
+                    auto events = conversation_->feed(std::span(buffer.data(), size_t(n)));
+                    while (!events.empty()) {
+                        for (const WorkerEvent& event : events) handle(event);
+                        events = conversation_->feed({});
+                    }
+                } else {
+                    size_t room = kMaxCapturedOutput - std::min(kMaxCapturedOutput, run_.output.size());
+                    run_.output.append(reinterpret_cast<const char*>(buffer.data()), std::min<size_t>(room, size_t(n)));
+                }
+            }
+        }
+    }
+
+    void writeRequest() {
+        ssize_t n = write(requestFd_, pendingRequest_.data(), pendingRequest_.size());
+        if (n > 0) pendingRequest_.erase(pendingRequest_.begin(), pendingRequest_.begin() + n);
+        else if (n < 0 && errno != EAGAIN && errno != EINTR) {  // the worker closed its input
+            close(requestFd_);
+            requestFd_ = -1;
+            pendingRequest_.clear();
+        }
+    }
+
+    void handle(const WorkerEvent& event) {
+        if (event.kind != WorkerEvent::Kind::Verdict) return;
+        size_t phase = event.phase;
+        const std::vector<uint8_t>& payload = event.payload;
+        PhaseOutcome& outcome = outcomes_[phase];
+        const std::string stub = blame(phase);
+        std::string text(payload.begin(), payload.end());
+        if (event.droppedBytes > 0) text += " [" + std::to_string(event.droppedBytes) + " more bytes not shown]";
+        switch (event.record) {
+        case RecordKind::PhaseData:
+            outcome.status = PhaseStatus::Completed;
+            outcome.data.assign(payload.begin(), payload.end());
+            break;
+        case RecordKind::NotStarted:
+            outcome.status = PhaseStatus::NotStarted;
+            outcome.reason = "not started: " + text + " throws NotImplemented";
+            break;
+        case RecordKind::Failed:
+            outcome.status = PhaseStatus::Failed;
+            outcome.reason = text + " (in " + stub + ")";
+            break;
+        case RecordKind::OutOfMemory:
+            outcome.status = PhaseStatus::OutOfMemory;
+            outcome.reason = "exceeded the memory limit of " + std::to_string(spec_.limits.memoryMiB) + " MiB in " + stub;
+            break;
+        case RecordKind::Forbidden: {
+            int32_t number = -1;
+            if (payload.size() == sizeof number) std::memcpy(&number, payload.data(), sizeof number);
+            outcome.status = PhaseStatus::Forbidden;
+            outcome.reason = "made a forbidden system call (" + systemCallName(number) + ") in " + stub +
+                             ": student code may not open files, start processes or use the network";
+            break;
+        }
+        default: return;
+        }
+        finishPhase(phase);
+        // A forbidden call ends the worker; every other verdict lets it go on.
+        if (event.record != RecordKind::Forbidden) {
+            conversation_->advance();
+            queueRequest();
+        }
+    }
+
+    // Before the worker has read phase 0, only code that runs at start-up can be running.
+    std::string blame(size_t phase) const {
+        if (phase == order_.front() && conversation_->step() == 0 && !conversation_->started())
+            return "code that runs before any test (a global object's constructor or an initialiser)";
+        return phases_[phase].stub;
+    }
+
+    // A phase's time runs from when the grader queued its request to the verdict: the worker is
+    // the student's process, so nothing it sends (a PhaseStart record written early or late)
+    // moves either end, and every CPU second it spends after one verdict is the next phase's.
+    void finishPhase(size_t phase) {
+        PhaseOutcome& outcome = outcomes_[phase];
+        outcome.seconds = std::chrono::duration<double>(Clock::now() - phaseRequestedAt_).count();
+        auto cpu = processCpuSeconds(pid_);
+        if (cpu && cpuAtPhase_) outcome.cpuSeconds = *cpu - *cpuAtPhase_;
+        reported_[phase] = true;
+    }
+
+    int reap() {
+        int status = 0;
+        while (!overran_ && !malformed()) {
+            pid_t r = waitpid(pid_, &status, WNOHANG);
+            if (r == pid_) return status;
+            if (Clock::now() >= deadline_ && phaseOverran()) {
+                overran_ = true;
+                break;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
+        kill(pid_, SIGKILL);
+        waitpid(pid_, &status, 0);
+        return status;
+    }
+
+    void judgeEnding(int status) {
+        auto phase = conversation_->currentPhase();
+        if (!phase || reported_[*phase]) return;
+        PhaseOutcome& outcome = outcomes_[*phase];
+        const std::string stub = blame(*phase);
+        int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        if (malformed()) {
+            outcome.status = PhaseStatus::Failed;
+            outcome.reason = "sent malformed results from " + stub;
+        } else if (overran_) {
+            outcome.status = PhaseStatus::TimedOut;
+            outcome.reason = "timed out after " + formatSeconds(spec_.limits.wallSeconds) + " s in " + stub;
+        } else if (WIFSIGNALED(status)) {
+            int sig = WTERMSIG(status);
+            if (sig == SIGXCPU || sig == SIGKILL) {
+                outcome.status = PhaseStatus::TimedOut;
+                outcome.reason = "used more than " + std::to_string(spec_.limits.cpuSeconds) + " s of CPU time in " + stub;
+            } else if (sig == SIGSYS) {
+                outcome.status = PhaseStatus::Forbidden;
+                outcome.reason = "made a forbidden system call in " + stub;
+            } else {
+                outcome.status = PhaseStatus::Crashed;
+                outcome.reason = "crashed with " + signalName(sig) + " in " + stub;
+            }
+        } else if (code == worker::kExitSandboxFailed) {
+            outcome.status = PhaseStatus::Failed;
+            outcome.reason = "the worker " + spec_.path + " could not be started in its sandbox";
+        } else {
+            outcome.status = PhaseStatus::NoResults;
+            outcome.reason = "the worker exited without results (" +
+                             (code == worker::kExitCalled ? std::string("it called exit()") : "exit status " + std::to_string(code)) +
+                             ") in " + stub;
+        }
+        finishPhase(*phase);
+    }
+
+    const WorkerSpec& spec_;
+    std::span<const ChildPhase> phases_;
+    SandboxRun& run_;
+    std::vector<PhaseOutcome> outcomes_;
+    std::vector<bool> reported_;
+    std::vector<size_t> order_;
+    std::optional<WorkerConversation> conversation_;
+    std::vector<uint8_t> pendingRequest_;
+    pid_t pid_ = -1;
+    int requestFd_ = -1;
+    Clock::time_point phaseRequestedAt_, deadline_;
+    std::optional<double> cpuAtPhase_;  // the worker's CPU time when the current phase was requested
+    bool overran_ = false;
+};
+
+}  // namespace
+
+bool TimeoutStrikes::exhausted(const std::string& stub) const {
+    auto it = counts_.find(stub);
+    return it != counts_.end() && it->second >= kLimit;
+}
+
+SandboxRun runSandboxed(const WorkerSpec& worker, std::span<const ChildPhase> phases, TimeoutStrikes* strikes) {
+    const SandboxLimits& limits = worker.limits;
+    // A worker that ends while the grader still writes its request must not end the grader.
+    std::signal(SIGPIPE, SIG_IGN);
+    SandboxRun run;
+    run.phases.resize(phases.size());
+    std::vector<bool> have(phases.size(), false), skipped(phases.size(), false);
+    for (size_t k = 0; k < phases.size() && strikes; ++k)
+        if (strikes->exhausted(phases[k].stub)) {
+            skipped[k] = have[k] = true;
+            run.phases[k] = PhaseOutcome{PhaseStatus::TimedOut, {},
+                                         "not run: " + phases[k].stub + " already timed out " + std::to_string(TimeoutStrikes::kLimit) +
+                                             " times (limit " + formatSeconds(limits.wallSeconds) + " s per test)",
+                                         0.0, 0.0};
+        }
+    if (skipped[0]) {
+        for (size_t k = 1; k < phases.size(); ++k) run.phases[k] = run.phases[0];
+        return run;
+    }
+    while (true) {
+        std::vector<size_t> order = {0};
+        for (size_t k = 1; k < phases.size(); ++k)
+            if (!have[k]) order.push_back(k);
+        WorkerSession session(worker, phases, run);
+        session.execute(order);
+        for (size_t k = 0; k < phases.size(); ++k)
+            if (session.reported()[k] && !have[k]) {
+                run.phases[k] = session.outcomes()[k];
+                have[k] = true;
+            }
+        // Without the set-up nothing else can run: every phase shares its verdict.
+        const PhaseOutcome& setup = session.reported()[0] ? session.outcomes()[0] : run.phases[0];
+        if (setup.status != PhaseStatus::Completed) {
+            for (size_t k = 1; k < phases.size(); ++k)
+                if (!have[k]) {
+                    run.phases[k] = PhaseOutcome{setup.status, {}, setup.reason, 0.0, 0.0};
+                    have[k] = true;
+                }
+            break;
+        }
+        // A worker that ended early costs only its current phase: the next one repeats the
+        // set-up and goes on with the first phase without a verdict.
+        if (session.finished() || std::find(have.begin() + 1, have.end(), false) == have.end()) break;
+        // A worker that gave no new verdict at all cannot make progress: stop rather than loop.
+        bool progressed = false;
+        for (size_t k = 1; k < phases.size(); ++k) progressed |= session.reported()[k];
+        if (!progressed) {
+            for (size_t k = 1; k < phases.size(); ++k)
+                if (!have[k]) {
+                    run.phases[k] = PhaseOutcome{PhaseStatus::NoResults, {}, "the worker ended without results in " + phases[k].stub, 0.0, 0.0};
+                    have[k] = true;
+                }
+            break;
+        }
+    }
+    for (size_t k = 0; k < phases.size(); ++k) {
+        if (!have[k]) run.phases[k] = PhaseOutcome{PhaseStatus::NoResults, {}, "the worker ended without results in " + phases[k].stub, 0.0, 0.0};
+        // A phase that inherited the set-up's timeout did not time out itself.
+        bool ownVerdict = k == 0 || run.phases[0].status == PhaseStatus::Completed;
+        if (strikes && ownVerdict && !skipped[k] && run.phases[k].status == PhaseStatus::TimedOut) strikes->record(phases[k].stub);
+    }
+    return run;
+}
+
+std::string workerIsolation() {
+    std::string isolation = "student code runs only in a separate, statically linked worker image holding no expected answers; "
+                            "a seccomp filter loaded at its first instruction (no files, processes, network or signals to others); "
+                            "CPU, memory, file-size and descriptor limits; wall-clock deadlines per phase";
+    isolation += geteuid() == 0 ? "; the worker runs as the unprivileged user nobody" : "; the worker runs as the grader's own user";
+    return isolation;
+}
+
+const char* phaseStatusName(PhaseStatus status) {
+    switch (status) {
+    case PhaseStatus::Completed: return "completed";
+    case PhaseStatus::NotStarted: return "not started";
+    case PhaseStatus::Failed: return "failed";
+    case PhaseStatus::Crashed: return "crashed";
+    case PhaseStatus::TimedOut: return "timed out";
+    case PhaseStatus::OutOfMemory: return "out of memory";
+    case PhaseStatus::Forbidden: return "forbidden system call";
+    case PhaseStatus::NoResults: return "no results";
+    }
+    return "?";
+}
+
+}  // namespace rtlab::grader

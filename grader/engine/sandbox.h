@@ -1,0 +1,89 @@
+// Runs student code in worker processes (docs/grading.md, "Isolation and trust"). A worker is
+// a fresh, statically linked image (grader/worker/) that holds the student's code and none of
+// the grader's answers; it loads the grader's system-call filter at its first instruction and
+// runs with CPU, memory and file limits, as an unprivileged user when the grader is root. The
+// grader streams it one phase at a time, reads raw results with bounds checks, enforces wall-
+// clock deadlines that nothing the worker sends can extend, turns every way a worker can end
+// into a one-line verdict, and never runs student code itself.
+#pragma once
+
+#include "grader/wire/wire_format.h"
+
+#include <cstdint>
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace rtlab::grader {
+
+struct SandboxLimits {
+    double wallSeconds = 5.0;  // per phase: CPU seconds, and at most 4 times that of wall clock (sandbox.cpp)
+    int cpuSeconds = 30;        // per worker, all threads together
+    int memoryMiB = 512;        // address space of a worker beyond its inputs
+};
+
+// The executable that runs the student's code (rtlab-worker, rtlab-worker-solution, or the
+// one built from a submission) and its limits.
+struct WorkerSpec {
+    std::string path;
+    SandboxLimits limits;
+};
+
+// One step of a worker's work: a task of grader/wire/task_inputs.h with its input. It calls
+// student code (stub names it in verdicts) and returns raw results only: hits, structures,
+// values. Phase 0 of a group is the set-up the others need (typically the build); it runs in
+// every worker of the group.
+struct ChildPhase {
+    std::string stub;  // e.g. "a1 buildBvh (assignments/a1_bvh/bvh_build.cpp)"
+    std::string task;
+    std::vector<uint8_t> input;
+};
+
+enum class PhaseStatus {
+    Completed,    // data holds the raw results
+    NotStarted,   // a stub threw rtlab::NotImplemented
+    Failed,       // threw an exception, or sent malformed results
+    Crashed,      // killed by a signal
+    TimedOut,     // wall-clock or CPU limit
+    OutOfMemory,  // std::bad_alloc under the address-space limit
+    Forbidden,    // tried a system call the filter blocks
+    NoResults,    // the child exited before reporting this phase
+};
+
+struct PhaseOutcome {
+    PhaseStatus status = PhaseStatus::NoResults;
+    std::vector<uint8_t> data;
+    std::string reason;  // one line, for anything but Completed
+    double seconds = 0.0;     // wall clock, from the request to the verdict
+    double cpuSeconds = 0.0;  // the worker's CPU time (all threads) while the phase ran, as the kernel counted it
+};
+
+struct SandboxRun {
+    std::vector<PhaseOutcome> phases;
+    std::string output;  // raw bytes the student code printed (first few KiB); escape before showing
+};
+
+// Counts wall-clock timeouts per stub across a grading run, so a stub that hangs on every
+// input costs its time limit twice, not once per test.
+class TimeoutStrikes {
+public:
+    static constexpr int kLimit = 2;
+    bool exhausted(const std::string& stub) const;
+    void record(const std::string& stub) { ++counts_[stub]; }
+
+private:
+    std::map<std::string, int> counts_;
+};
+
+// Runs every phase. When a child dies in phase k > 0, a new child runs the set-up again and
+// continues with phase k + 1, so one crash costs only the tests that depend on that phase.
+// Phases whose stub has exhausted its strikes are reported as timed out without running.
+SandboxRun runSandboxed(const WorkerSpec& worker, std::span<const ChildPhase> phases, TimeoutStrikes* strikes = nullptr);
+
+// What the worker's isolation consists of on this machine, for the reports.
+std::string workerIsolation();
+
+const char* phaseStatusName(PhaseStatus status);
+
+}  // namespace rtlab::grader

@@ -1,0 +1,176 @@
+#include "grader/engine/submission_build.h"
+
+#include "framework/core/error.h"
+#include "grader/engine/compile_sandbox.h"
+#include "grader/engine/pristine_stubs.h"
+#include "grader/engine/stub_object_cache.h"
+#include "grader/engine/submission_files.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <set>
+
+namespace rtlab::grader {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr uintmax_t kMaxFileBytes = uintmax_t(1) << 20;
+constexpr size_t kMaxFiles = 200;
+// The framework headers a student file may include: the assignment interfaces and what they
+// build on. The renderer, the oracle and the reference renderers are not among them.
+constexpr const char* kStudentHeaderFolders[] = {"framework/core", "framework/interface", "framework/accel", "framework/scene"};
+
+void writeFile(const fs::path& path, const std::string& contents) {
+    fs::create_directories(path.parent_path());
+    std::ofstream out(path, std::ios::binary);
+    out << contents;
+    if (!out) throw Error(path.string() + ": cannot be written");
+}
+
+// A framework file (a student header) read for the compile sandbox.
+std::string readFrameworkFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string contents(std::istreambuf_iterator<char>(in), {});
+    if (!in.good() && !in.eof()) throw Error(path.string() + ": cannot be read");
+    return contents;
+}
+
+bool isSource(const fs::path& p) { return p.extension() == ".cpp" || p.extension() == ".h" || p.extension() == ".hpp"; }
+
+// Where a submission keeps the file that replaces stub `relative` (assignments/a0_intersect/
+// ray_box.cpp): under the same path, without the assignments/ prefix, or flat by file name.
+std::optional<fs::path> findInSubmission(const SubmissionFolder& submission, const fs::path& relative) {
+    fs::path withoutRoot = relative.lexically_relative("assignments");
+    for (const fs::path& candidate : {relative, withoutRoot, relative.filename()})
+        if (submission.kind(candidate) != SubmissionFolder::Kind::Missing) return candidate;
+    return std::nullopt;
+}
+
+// The stubs, replaced file by file by the submission's, plus the submission's own helper
+// sources and headers in its assignment folders. Returns the files taken from the submission.
+std::vector<std::string> mergeSources(const SubmissionFolder& submission, const std::map<std::string, std::string>& stubs, const fs::path& into) {
+    std::vector<std::string> taken;
+    std::set<fs::path> assignments;
+    for (const auto& [name, contents] : stubs) {
+        fs::path relative = name;
+        assignments.insert(relative.parent_path());
+        auto replacement = findInSubmission(submission, relative);
+        writeFile(into / relative, replacement ? submission.read(*replacement, kMaxFileBytes) : contents);
+        if (replacement) taken.push_back((submission.root() / *replacement).string());
+    }
+    for (const fs::path& assignment : assignments) {
+        fs::path name = assignment.filename();
+        for (const fs::path& folder : {fs::path("assignments") / name, name}) {
+            if (submission.kind(folder) != SubmissionFolder::Kind::Folder) continue;
+            for (const std::string& entry : submission.list(folder)) {
+                if (!isSource(entry) || stubs.count((assignment / entry).string())) continue;
+                if (taken.size() >= kMaxFiles) throw Error(submission.root().string() + ": more than 200 source files");
+                writeFile(into / assignment / entry, submission.read(folder / entry, kMaxFileBytes));
+                taken.push_back((submission.root() / folder / entry).string());
+            }
+        }
+    }
+    return taken;
+}
+
+void copyStudentHeaders(const fs::path& sourceDir, const fs::path& into) {
+    for (const char* folder : kStudentHeaderFolders)
+        for (const auto& entry : fs::directory_iterator(sourceDir / folder))
+            if (entry.path().extension() == ".h") writeFile(into / folder / entry.path().filename(), readFrameworkFile(entry.path()));
+}
+
+nlohmann::json readToolchain(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw Error(path + ": missing; build rtlab first (make build)");
+    try {
+        return nlohmann::json::parse(in);
+    } catch (const nlohmann::json::exception& e) {
+        throw Error(path + ": malformed (" + e.what() + ")");
+    }
+}
+
+// The committed stubs of folders not in `graded` (all of them are graded when it is empty),
+// moved out of stubs.
+std::map<std::string, std::string> takeUngraded(std::map<std::string, std::string>& stubs, const std::vector<std::string>& graded) {
+    std::map<std::string, std::string> ungraded;
+    if (graded.empty()) return ungraded;
+    for (auto it = stubs.begin(); it != stubs.end();) {
+        std::string folder = fs::path(it->first).lexically_relative("assignments").begin()->string();
+        if (std::find(graded.begin(), graded.end(), folder) == graded.end()) {
+            ungraded.insert(*it);
+            it = stubs.erase(it);
+        } else {
+            ++it;
+        }
+    }
+    return ungraded;
+}
+
+}  // namespace
+
+SubmissionBuild buildSubmission(const std::string& submissionDir, const std::string& sourceDir, const std::string& toolchainPath,
+                                const std::string& workDir, const CompileLimits& limits, const std::vector<std::string>& gradedFolders) {
+    SubmissionFolder submission(submissionDir);
+    nlohmann::json toolchain = readToolchain(toolchainPath);
+    const CompileSandbox& sandbox = CompileSandbox::detect();
+    ProcessLimits processLimits;
+    processLimits.wallSeconds = limits.wallSeconds;
+    processLimits.cpuSeconds = static_cast<int>(limits.wallSeconds) + 1;
+    processLimits.memoryMiB = limits.memoryMiB;
+
+    SubmissionBuild build;
+    // The runtime is copied, so the compiler needs nothing of the build tree (whose folders an
+    // unprivileged user may not be able to enter).
+    CompileInputs host{(fs::path(workDir) / "src").string(), (fs::path(workDir) / "include").string(),
+                       (fs::path(workDir) / "objects").string(), (fs::path(workDir) / "out").string()};
+    fs::create_directories(host.output);
+    fs::create_directories(host.objects);
+    fs::copy_file(toolchain.at("worker_runtime").get<std::string>(), fs::path(host.objects) / "worker-runtime.o",
+                  fs::copy_options::overwrite_existing);
+    copyStudentHeaders(sourceDir, host.headers);
+    auto stubs = pristineStubs(sourceDir);
+    // The assignments not graded link their committed stubs, compiled once for every grading
+    // run; if that object cannot be had, they compile with the submission as before.
+    auto ungraded = takeUngraded(stubs, gradedFolders);
+    if (!ungraded.empty()) {
+        // The stubs are committed code compiled once per cache key, not the submission: the
+        // submission's compile limit is for its own files, and a loaded machine may need more
+        // than that for every other assignment's stubs. Still a hard limit.
+        ProcessLimits stubLimits = processLimits;
+        stubLimits.wallSeconds = std::max(limits.wallSeconds, kStubCompileSeconds);
+        stubLimits.cpuSeconds = static_cast<int>(stubLimits.wallSeconds) + 1;
+        std::string why;
+        std::string object = compiledStubObject({ungraded, host.headers, toolchain, (fs::path(toolchainPath).parent_path() / "stub-objects").string(),
+                                                 (fs::path(workDir) / "stubs").string(), stubLimits},
+                                                &why);
+        if (object.empty()) stubs.merge(ungraded);
+        else fs::copy_file(object, fs::path(host.objects) / "stubs.o", fs::copy_options::overwrite_existing);
+    }
+    build.fromSubmission = mergeSources(submission, stubs, host.sources);
+
+    CompileInputs inside = sandbox.visiblePaths(host);
+    std::vector<std::string> command = {fs::canonical(toolchain.at("compiler").get<std::string>()).string()};
+    for (const auto& flag : toolchain.at("compile_flags")) command.push_back(flag.get<std::string>());
+    command.insert(command.end(), {"-I" + inside.headers, "-I" + inside.sources});
+    for (const auto& entry : fs::recursive_directory_iterator(host.sources))
+        if (entry.path().extension() == ".cpp") command.push_back((fs::path(inside.sources) / entry.path().lexically_relative(host.sources)).string());
+    for (const auto& entry : fs::directory_iterator(host.objects)) command.push_back((fs::path(inside.objects) / entry.path().filename()).string());
+    for (const auto& flag : toolchain.at("link_flags")) command.push_back(flag.get<std::string>());
+    command.insert(command.end(), {"-o", (fs::path(inside.output) / "rtlab-worker").string()});
+
+    ProcessResult result = sandbox.run(host, command, processLimits);
+    build.log = result.output;
+    if (result.droppedBytes > 0) build.log += "\n[" + std::to_string(result.droppedBytes) + " more bytes of compiler output not shown]\n";
+    if (result.timedOut) build.log = "the compiler was stopped after the limit of " + std::to_string(int(limits.wallSeconds)) + " s\n" + build.log;
+    else if (!result.succeeded() && build.log.empty()) build.log = "the compiler failed: " + result.failure + "\n";
+    build.executable = (fs::path(host.output) / "rtlab-worker").string();
+    build.succeeded = result.succeeded() && fs::is_regular_file(build.executable);
+    return build;
+}
+
+}  // namespace rtlab::grader

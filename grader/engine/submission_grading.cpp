@@ -1,0 +1,86 @@
+#include "grader/engine/submission_grading.h"
+
+#include "framework/core/error.h"
+#include "grader/engine/assignment_registry.h"
+#include "grader/engine/compile_sandbox.h"
+#include "grader/engine/rubric.h"
+#include "grader/engine/submission_build.h"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <sstream>
+
+namespace rtlab::grader {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> splitLines(const std::string& text, size_t maxLines) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line) && lines.size() < maxLines;) lines.push_back(line);
+    return lines;
+}
+
+// The first line that says what went wrong: a compiler's "error:" line when there is one.
+std::string firstError(const std::string& log) {
+    std::istringstream in(log);
+    for (std::string line; std::getline(in, line);)
+        if (line.find("error") != std::string::npos) return line;
+    auto lines = splitLines(log, 1);
+    return lines.empty() ? "no output" : lines.front();
+}
+
+// The assignments/ folders the chosen assignments' tests call; empty (all of them) when every
+// assignment is graded.
+std::vector<std::string> gradedFolders(const std::vector<std::string>& assignmentIds) {
+    std::vector<std::string> folders;
+    for (const std::string& id : assignmentIds)
+        if (const Assignment* a = findAssignment(id))
+            for (const std::string& folder : a->folders)
+                if (std::find(folders.begin(), folders.end(), folder) == folders.end()) folders.push_back(folder);
+    return folders;
+}
+
+}  // namespace
+
+GradingReport gradeSubmission(const std::string& submissionDir, const SubmissionOptions& options) {
+    auto start = std::chrono::steady_clock::now();
+    GradingOptions g = options.grading;
+    g.implementation = "submission " + submissionDir;
+    fs::create_directories(options.workDir);
+    TestResult buildTest = makeResult("build", "build");
+    SubmissionBuild build;
+    std::string unreadable;
+    try {
+        build = buildSubmission(submissionDir, g.sourceDir, options.toolchainPath, options.workDir + "/build", g.compile,
+                                gradedFolders(g.assignments));
+    } catch (const Error& e) {
+        unreadable = e.what();
+    }
+    if (!unreadable.empty()) {
+        g.unavailableWorker = "not graded: the submission cannot be read (see the build test)";
+        buildTest.reason = "the submission cannot be read: " + unreadable;
+    } else if (build.succeeded) {
+        g.workerPath = build.executable;
+        buildTest.status = TestStatus::Passed;
+        buildTest.fraction = 1.0;
+        for (const std::string& file : build.fromSubmission) buildTest.details.push_back("from the submission: " + file);
+    } else {
+        // Every test is still listed, failed, so the score is 0 of the assignments' points.
+        g.unavailableWorker = "not graded: the submission does not compile (see the build test)";
+        buildTest.reason = "the submission does not compile: " + firstError(build.log);
+    }
+    for (const std::string& line : splitLines(build.log, 60)) buildTest.details.push_back(line);
+
+    GradingReport report = gradeWorker(g);
+    // The compile sandbox a submission is built in, also when it could not be read.
+    report.isolation += "; " + CompileSandbox::detect().description();
+    report.tests.insert(report.tests.begin(), buildTest);
+    Rubric::load(g.rubricPath.empty() ? g.sourceDir + "/grader/rubric.json" : g.rubricPath).apply(report.tests);
+    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return report;
+}
+
+}  // namespace rtlab::grader
