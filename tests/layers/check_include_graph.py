@@ -4,8 +4,8 @@ know each other do not.
 
 Every #include "a/b/c.h" in a tracked .cpp or .h file is an edge from the including file's
 layer to the included file's layer. Layers are framework/<part> (core, interface, scene, accel,
-oracle, sampling, render, external, pov, blender), grader (with grader/worker), cli, fast, bench, fuzz, assignments,
-solutions and tests. ALLOWED lists, for each layer, the layers it may include besides itself;
+oracle, sampling, render, external, pov, blender), grader (with grader/worker), viewer, cli, fast, bench, fuzz,
+assignments, solutions and tests. ALLOWED lists, for each layer, the layers it may include besides itself;
 any other edge is printed as FILE:LINE and fails the test, and so does a file in a layer the
 table does not know (a new folder must say where it sits).
 
@@ -42,7 +42,10 @@ ALLOWED = {
     "grader": FRAMEWORK | {"grader/worker"},
     "grader/worker": FRAMEWORK | {"grader"},
     "fast": FRAMEWORK,
-    "cli": FRAMEWORK | {"grader", "grader/worker"},
+    # The viewer sits above the grader (it reads traces, structure views and the grader's
+    # statistics) and below the command line; nothing below it includes it.
+    "viewer": FRAMEWORK | {"grader", "grader/worker"},
+    "cli": FRAMEWORK | {"grader", "grader/worker", "viewer"},
     "bench": FRAMEWORK | {"fast"},
     "fuzz": FRAMEWORK | {"grader", "grader/worker"},
     # The test suite and the hostile fixtures may reach anything.

@@ -1,0 +1,150 @@
+#include "viewer/trace_nodes.h"
+
+#include "framework/core/fnv1a.h"
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+#include <unordered_map>
+
+namespace rtlab::viewer {
+namespace {
+
+uint64_t boundsKey(const Bounds3f& b) {
+    float v[6] = {b.lower.x, b.lower.y, b.lower.z, b.upper.x, b.upper.y, b.upper.z};
+    return fnv1a64(v, sizeof v);
+}
+
+bool sameBits(const Bounds3f& a, const Bounds3f& b) {
+    return std::memcmp(&a, &b, sizeof(Bounds3f)) == 0;
+}
+
+uint64_t listKey(const uint32_t* prims, size_t count) { return fnv1a64(prims, count * sizeof(uint32_t)); }
+
+// Where the ray enters box (slab test in double), or +inf when it misses it.
+double entryDistance(const Bounds3f& box, const Ray& ray) {
+    double t0 = -std::numeric_limits<double>::infinity(), t1 = std::numeric_limits<double>::infinity();
+    for (int a = 0; a < 3; ++a) {
+        double o = ray.origin[a], d = ray.direction[a];
+        if (d == 0.0) {
+            if (o < box.lower[a] || o > box.upper[a]) return std::numeric_limits<double>::infinity();
+            continue;
+        }
+        double ta = (box.lower[a] - o) / d, tb = (box.upper[a] - o) / d;
+        t0 = std::max(t0, std::min(ta, tb));
+        t1 = std::min(t1, std::max(ta, tb));
+    }
+    return t0 <= t1 * (1.0 + 1e-6) + 1e-9 ? t0 : std::numeric_limits<double>::infinity();
+}
+
+bool isPrimitiveOp(TraceOpKind kind) { return kind == TraceOpKind::PrimitiveTest || kind == TraceOpKind::MailboxRepeat; }
+
+bool isGrid(const StructureView& view, const std::array<int, 3>& resolution) {
+    size_t cells = size_t(resolution[0]) * resolution[1] * resolution[2];
+    return !view.nodes.empty() && view.nodes[0].childCount == cells && view.nodes.size() == cells + 1 &&
+           size_t(view.nodes[0].firstChild) + cells <= view.children.size();
+}
+
+}  // namespace
+
+std::vector<uint32_t> resolveTraceNodes(const StructureView& view, const TraversalTrace& trace, const Ray& ray,
+                                        const std::vector<GridCell>& cells, const std::array<int, 3>& resolution) {
+    std::vector<uint32_t> nodes(trace.ops.size(), kUnresolved);
+    const size_t n = view.nodes.size();
+    bool anyBox = std::any_of(trace.ops.begin(), trace.ops.end(), [](const TraceOp& op) { return op.kind == TraceOpKind::BoxTest; });
+    std::unordered_multimap<uint64_t, uint32_t> byBounds;
+    if (anyBox)
+        for (uint32_t i = 0; i < n; ++i) byBounds.emplace(boundsKey(view.nodes[i].bounds), i);
+    // Nodes by their primitive lists, for the runs of primitive tests.
+    std::unordered_multimap<uint64_t, uint32_t> byList;
+    for (uint32_t i = 0; i < n; ++i) {
+        const StructureNode& node = view.nodes[i];
+        if (node.primCount == 0 || uint64_t(node.firstPrim) + node.primCount > view.primIndices.size()) continue;
+        byList.emplace(listKey(view.primIndices.data() + node.firstPrim, node.primCount), i);
+    }
+    bool grid = isGrid(view, resolution);
+    size_t cellStep = 0;
+    double lastEntry = -std::numeric_limits<double>::infinity();
+    std::vector<uint32_t> run;
+    for (size_t i = 0; i < trace.ops.size(); ++i) {
+        const TraceOp& op = trace.ops[i];
+        switch (op.kind) {
+        case TraceOpKind::BoxTest: {
+            if (op.index >= trace.boxes.size()) break;
+            const Bounds3f& box = trace.boxes[op.index];
+            uint32_t best = kUnresolved;
+            auto [from, to] = byBounds.equal_range(boundsKey(box));
+            for (auto it = from; it != to; ++it)
+                if (sameBits(view.nodes[it->second].bounds, box)) best = std::min(best, it->second);
+            nodes[i] = best;
+            break;
+        }
+        case TraceOpKind::LeafEntry:
+            if (op.index < n) nodes[i] = op.index;
+            break;
+        case TraceOpKind::CellStep: {
+            size_t k = cellStep++;
+            if (!grid || k >= cells.size()) break;
+            const GridCell& c = cells[k];
+            bool inside = true;
+            for (int a = 0; a < 3; ++a) inside = inside && c[a] >= 0 && c[a] < resolution[a];
+            if (!inside) break;
+            size_t index = (size_t(c[2]) * resolution[1] + c[1]) * resolution[0] + c[0];
+            nodes[i] = view.children[view.nodes[0].firstChild + index];
+            break;
+        }
+        default:
+            break;
+        }
+        // A run of primitive operations ends here: find the node whose list it is.
+        bool endsRun = isPrimitiveOp(op.kind) && (i + 1 == trace.ops.size() || !isPrimitiveOp(trace.ops[i + 1].kind));
+        if (isPrimitiveOp(op.kind)) run.push_back(op.index);
+        if (!endsRun) continue;
+        size_t first = i + 1 - run.size();
+        // A leaf entry, a known cell step or a leaf's box test just before names the node itself.
+        bool named = first > 0 && nodes[first - 1] != kUnresolved && !isPrimitiveOp(trace.ops[first - 1].kind) &&
+                     view.nodes[nodes[first - 1]].childCount == 0;
+        if (!named) {
+            uint32_t best = kUnresolved;
+            double bestEntry = std::numeric_limits<double>::infinity();
+            auto [from, to] = byList.equal_range(listKey(run.data(), run.size()));
+            for (auto it = from; it != to; ++it) {
+                const StructureNode& node = view.nodes[it->second];
+                if (node.primCount != run.size() ||
+                    !std::equal(run.begin(), run.end(), view.primIndices.begin() + node.firstPrim))
+                    continue;
+                double entry = entryDistance(node.bounds, ray);
+                // Front to back: the nearest candidate not before the node resolved last.
+                if (entry >= lastEntry - 1e-6 * std::abs(lastEntry) && (best == kUnresolved || entry < bestEntry)) {
+                    best = it->second;
+                    bestEntry = entry;
+                }
+            }
+            if (best != kUnresolved) {
+                for (size_t k = first; k <= i; ++k) nodes[k] = best;
+                if (bestEntry < std::numeric_limits<double>::infinity()) lastEntry = bestEntry;
+            }
+        } else {
+            for (size_t k = first; k <= i; ++k) nodes[k] = nodes[first - 1];
+        }
+        run.clear();
+    }
+    return nodes;
+}
+
+int64_t firstDifference(const TraversalTrace& a, const TraversalTrace& b) {
+    size_t common = std::min(a.ops.size(), b.ops.size());
+    for (size_t i = 0; i < common; ++i) {
+        const TraceOp& x = a.ops[i];
+        const TraceOp& y = b.ops[i];
+        bool same = x.kind == y.kind && x.hit == y.hit;
+        if (same && x.kind == TraceOpKind::BoxTest)
+            same = x.index < a.boxes.size() && y.index < b.boxes.size() && sameBits(a.boxes[x.index], b.boxes[y.index]);
+        else if (same)
+            same = x.index == y.index;
+        if (!same) return static_cast<int64_t>(i);
+    }
+    return a.ops.size() == b.ops.size() ? -1 : static_cast<int64_t>(common);
+}
+
+}  // namespace rtlab::viewer
