@@ -96,6 +96,10 @@ struct SamplerPanel {
     float cosThetaMax = 0.0f;        // cone
     std::vector<double> observed, expected;  // per histogram cell
     std::string cellsNote;  // how the cells are laid out ("20 bands of z x 40 sectors of phi")
+    // Cells rows x cols (then one cell outside): directions' bands of z (from zMin to 1) by
+    // sectors of phi, drawn as the histogram of z and a map of each cell's deviation; 0: a list.
+    int rows = 0, cols = 0;
+    double zMin = 0.0;
     double chiSquare = 0.0, pValue = 1.0;
     int dof = 0;
     std::string error;  // non-empty: the sampler threw (NotImplemented, ...) and this says what
@@ -130,6 +134,9 @@ struct CaseView {
     std::optional<StructureView> structure;
     std::vector<RayCase> rays;
     std::optional<DdaCells> dda;
+    // For a uniform grid's view (a root whose children are the cells in cellIndex order): its
+    // resolution, so cells are named by their coordinates.
+    std::optional<std::array<int, 3>> gridResolution;
     std::optional<ImageSet> images;
     std::vector<SamplerPanel> samplers;
     std::vector<EstimatorCurve> estimators;

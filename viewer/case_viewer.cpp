@@ -241,7 +241,7 @@ void addRays(const CaseView& view, const NodeSelection& selection, const std::ve
         if (c.studentTrace && c.expectedTrace) j["firstDifference"] = firstDifference(*c.studentTrace, *c.expectedTrace);
         list.push_back(j);
     }
-    blob.add("ray.data", rays);
+    if (!rays.empty()) blob.add("ray.data", rays);
     meta["rays"] = list;
 }
 
@@ -310,7 +310,8 @@ void addRadiometry(const CaseView& view, ViewerBlob& blob, json& meta) {
         blob.add(prefix + ".shape", shape);
         samplers.push_back({{"name", text(s.name, view.limits)}, {"domain", text(s.domain, view.limits)},
                             {"cells", text(s.cellsNote, view.limits)}, {"chiSquare", number(s.chiSquare)}, {"p", number(s.pValue)},
-                            {"dof", s.dof}, {"error", text(s.error, view.limits)}, {"points", n}});
+                            {"dof", s.dof}, {"error", text(s.error, view.limits)}, {"points", n}, {"rows", s.rows}, {"cols", s.cols},
+                            {"zMin", number(s.zMin)}});
     }
     json estimators = json::array();
     for (size_t i = 0; i < view.estimators.size(); ++i) {
@@ -419,6 +420,7 @@ void writeCaseViewer(const fs::path& dir, const CaseView& view) {
     addRays(view, selection, studentNodes, expectedNodes, blob, meta);
     if (view.rays.size() > rayCount) meta["notes"].push_back("showing " + std::to_string(rayCount) + " of " + std::to_string(view.rays.size()) + " rays");
     if (view.dda) addDda(*view.dda, limits, blob, meta);
+    if (view.gridResolution) blob.add("grid.resolution", std::vector<int32_t>(view.gridResolution->begin(), view.gridResolution->end()));
     if (view.images) addImages(*view.images, folder.scratch(), limits, blob, meta);
     if (!view.samplers.empty() || !view.estimators.empty()) addRadiometry(view, blob, meta);
 

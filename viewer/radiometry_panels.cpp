@@ -45,13 +45,16 @@ struct Bins {
     std::function<size_t(const Vec3&)> cellOf;
     std::vector<double> expected;
     std::string note;
+    int rows = 0, cols = 0;
+    double zMin = 0.0;
 };
 
 Bins binsOf(const SamplerCall& c) {
     auto directions = [](double zMin, std::function<double(double)> cdf) {
         grader::DirectionBins b{zMin};
         return Bins{[b](const Vec3& v) { return b.cellOf(v); }, b.expected(kSamples, cdf),
-                    std::to_string(b.zBands) + " bands of z x " + std::to_string(b.phiSectors) + " sectors of phi, then outside"};
+                    std::to_string(b.zBands) + " bands of z x " + std::to_string(b.phiSectors) + " sectors of phi, then outside",
+                    b.zBands, b.phiSectors, zMin};
     };
     grader::TriangleBins t{DVec3(c.p0), DVec3(c.p1), DVec3(c.p2)};
     std::string lattice = std::to_string(t.k * t.k) + " equal sub-triangles, then off the triangle";
@@ -103,6 +106,9 @@ std::vector<SamplerPanel> samplerPanels(const SamplerFunction& sample) {
         try {
             Bins bins = binsOf(call);
             panel.cellsNote = bins.note;
+            panel.rows = bins.rows;
+            panel.cols = bins.cols;
+            panel.zMin = bins.zMin;
             panel.expected = bins.expected;
             panel.observed.assign(bins.expected.size(), 0.0);
             Pcg32 rng(call.seed, 0);

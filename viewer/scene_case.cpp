@@ -283,6 +283,7 @@ SceneCase buildSceneCase(const SceneCaseRequest& request) {
 
     // a3: the DDA's cells for the first ray, the linked code's against the exact walk.
     const auto* grid = dynamic_cast<const GridAccelerator*>(accelerator.get());
+    if (grid) view.gridResolution = grid->grid().resolution;
     if (grid && request.ddaWalk && !rays.empty()) {
         const UniformGrid& g = grid->grid();
         if (auto segment = segmentIn(g.bounds, rays[0])) {

@@ -62,6 +62,15 @@ std::vector<uint32_t> resolveTraceNodes(const StructureView& view, const Travers
         if (node.primCount == 0 || uint64_t(node.firstPrim) + node.primCount > view.primIndices.size()) continue;
         byList.emplace(listKey(view.primIndices.data() + node.firstPrim, node.primCount), i);
     }
+    // Parents, to tell apart nodes with the same bounds (a BVH child as large as its parent): a
+    // walk tests a node after its parent and once.
+    std::vector<uint32_t> parentOf(n, kUnresolved);
+    for (uint32_t i = 0; i < n; ++i) {
+        const StructureNode& node = view.nodes[i];
+        for (uint64_t c = node.firstChild; c < uint64_t(node.firstChild) + node.childCount && c < view.children.size(); ++c)
+            if (view.children[c] < n && parentOf[view.children[c]] == kUnresolved && view.children[c] != 0) parentOf[view.children[c]] = i;
+    }
+    std::vector<bool> met(n, false);
     bool grid = isGrid(view, resolution);
     size_t cellStep = 0;
     double lastEntry = -std::numeric_limits<double>::infinity();
@@ -72,11 +81,20 @@ std::vector<uint32_t> resolveTraceNodes(const StructureView& view, const Travers
         case TraceOpKind::BoxTest: {
             if (op.index >= trace.boxes.size()) break;
             const Bounds3f& box = trace.boxes[op.index];
-            uint32_t best = kUnresolved;
+            // Of the nodes with these bounds: the first one not met yet whose parent was, else the
+            // first not met yet, else the first.
+            uint32_t best[3] = {kUnresolved, kUnresolved, kUnresolved};
             auto [from, to] = byBounds.equal_range(boundsKey(box));
-            for (auto it = from; it != to; ++it)
-                if (sameBits(view.nodes[it->second].bounds, box)) best = std::min(best, it->second);
-            nodes[i] = best;
+            for (auto it = from; it != to; ++it) {
+                uint32_t v = it->second;
+                if (!sameBits(view.nodes[v].bounds, box)) continue;
+                bool parentMet = v == 0 || (parentOf[v] != kUnresolved && met[parentOf[v]]);
+                if (!met[v] && parentMet) best[0] = std::min(best[0], v);
+                if (!met[v]) best[1] = std::min(best[1], v);
+                best[2] = std::min(best[2], v);
+            }
+            nodes[i] = best[0] != kUnresolved ? best[0] : best[1] != kUnresolved ? best[1] : best[2];
+            if (nodes[i] != kUnresolved) met[nodes[i]] = true;
             break;
         }
         case TraceOpKind::LeafEntry:
@@ -123,6 +141,13 @@ std::vector<uint32_t> resolveTraceNodes(const StructureView& view, const Travers
             if (best != kUnresolved) {
                 for (size_t k = first; k <= i; ++k) nodes[k] = best;
                 if (bestEntry < std::numeric_limits<double>::infinity()) lastEntry = bestEntry;
+                // The plane steps just before a leaf: a front-to-back walk classifies the ray at
+                // each node on its way down to the leaf, so they are its nearest ancestors.
+                uint32_t ancestor = parentOf[best];
+                for (size_t k = first; k-- > 0 && trace.ops[k].kind == TraceOpKind::PlaneStep && ancestor != kUnresolved;) {
+                    nodes[k] = ancestor;
+                    ancestor = parentOf[ancestor];
+                }
             }
         } else {
             for (size_t k = first; k <= i; ++k) nodes[k] = nodes[first - 1];

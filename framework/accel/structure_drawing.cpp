@@ -21,7 +21,8 @@ std::vector<DVec3> clip(const std::vector<DVec3>& polygon, const HalfSpace& h) {
         const DVec3& b = polygon[(i + 1) % polygon.size()];
         double da = glm::dot(h.normal, a) - h.offset, db = glm::dot(h.normal, b) - h.offset;
         if (da >= 0.0) out.push_back(a);
-        if ((da >= 0.0) != (db >= 0.0)) out.push_back(a + (b - a) * (da / (da - db)));
+        // Strictly on opposite sides: a corner on the plane is kept once, as itself.
+        if ((da > 0.0 && db < 0.0) || (da < 0.0 && db > 0.0)) out.push_back(a + (b - a) * (da / (da - db)));
     }
     return out;
 }

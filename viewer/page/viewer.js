@@ -17,6 +17,7 @@
     shadowFree: 0x1fa83a, shadowBlocked: 0xd62728,
   };
   const MAX_LISTED_STEPS = 5000;
+  const DDA_OPACITY = 0.6;  // the cells over white: tests/viewer/browser_test.py expects this blend
   const MAX_BLOB_BYTES = 512 * 1024 * 1024;
 
   const $ = (id) => document.getElementById(id);
@@ -175,11 +176,13 @@
     const extent = frame.hi.map((h, a) => h - frame.lo[a]);
     const dequantise = (q, a) => frame.lo[a] + (q / 65535) * extent[a];
 
-    const has3d = data.has('mesh.pos') || data.has('node.id') || data.has('ray.data') || data.has('dda.bounds');
+    const has3d = ['mesh.pos', 'node.id', 'ray.data', 'dda.bounds'].some((name) => data.has(name));
     let view = null;
     if (has3d) view = makeView(meta, data, frame, options);
     if (view) {
       if (data.has('mesh.pos') || data.has('mesh.sphere')) addMesh(view, data, frame, extent);
+      const resolution = data.get('grid.resolution', Int32Array);
+      if (resolution.length === 3 && resolution.every((r) => r >= 1)) view.gridResolution = Array.from(resolution);
       if (meta.structure && data.has('node.id')) addStructure(view, meta, data, dequantise, options);
       if (data.has('dda.bounds')) addDda(view, data);
       if (Array.isArray(meta.rays) && meta.rays.length > 0) addRays(view, meta, data);
@@ -371,7 +374,9 @@
     view.nodePrims = nodePrims;
 
     const style = info.style;
-    const total = `${info.nodes} nodes` + (info.carried < info.reachable ? `, ${info.carried} of them carried (whole levels down to depth ${info.completeDepth}, and every node a trace visits)` : '');
+    const total = `${info.nodes} nodes` + (info.carried < info.reachable ? (style === 'cells' ? `, ${info.carried} of them on this page (the occupied cells` +
+      (info.completeDepth === info.maxDepth ? '' : ', up to the cap,') + ' and every cell a trace visits)' :
+      `, ${info.carried} of them on this page (whole levels down to depth ${info.completeDepth}, and every node a trace visits)`) : '');
     $('structure-info').textContent = `${fmt(meta.accelerator)}: ${total}, depth ${info.maxDepth}, ${info.references} primitive references` +
       (info.malformed > 0 ? `; ${info.malformed} child links out of range or repeated were left out` : '');
     $('structure-toggle-box').hidden = false;
@@ -467,7 +472,10 @@
       slider.addEventListener('input', drawLevel);
       drawLevel();
       if (style === 'levels') { swatch(COLOURS.interior, 'interior nodes at this depth'); swatch(COLOURS.leaf, 'leaves (faint: shallower leaves)'); }
-      else { swatch(depthColour(0, maxDepth), 'planes, coloured by depth (down to the slider)'); swatch(COLOURS.leaf, 'leaves at this depth'); }
+      else {
+        swatch(depthColour(0, maxDepth), 'planes, coloured by depth (down to the slider; the slider\'s own depth stronger)');
+        if (info.boxesMeaningful !== false) swatch(COLOURS.leaf, 'leaves at this depth');
+      }
     }
 
     // Hover: the nearest drawn box under the pointer, its numbers, and a leaf's primitives.
@@ -522,7 +530,7 @@
     group.add(lines(boxEdges(lo, hi), 0x555555, 1));
     for (const { cell, bits } of cells.values()) {
       const clo = cell.map((c, a) => lo[a] + (c + 0.08) * width[a]), chi = cell.map((c, a) => lo[a] + (c + 0.92) * width[a]);
-      group.add(solidBox(clo, chi, bits === 3 ? COLOURS.ddaBoth : bits === 1 ? COLOURS.ddaExpected : COLOURS.ddaStudent, 1));
+      group.add(solidBox(clo, chi, bits === 3 ? COLOURS.ddaBoth : bits === 1 ? COLOURS.ddaExpected : COLOURS.ddaStudent, DDA_OPACITY));
     }
     const legend = $('legend');
     for (const [colour, label] of [[COLOURS.ddaExpected, 'expected cells only'], [COLOURS.ddaStudent, 'your cells only'], [COLOURS.ddaBoth, 'cells of both walks']]) {
@@ -556,11 +564,21 @@
     const node = trace.node[i] !== NO_NODE && view.nodes && view.nodes[trace.node[i]] ? view.nodes[trace.node[i]] : null;
     if (k === OP.BOX) s += node ? ` node ${node.id}` : ' (box of no carried node)';
     if (k === OP.BOX) s += trace.hit[i] ? ` hit, enters at t=${fmt(trace.t[i])}` : ' miss';
-    if (k === OP.CELL || k === OP.PLANE) s += node ? ` node ${node.id}` : '';
+    if (k === OP.CELL) s += node ? ' ' + cellName(view, node) : '';
+    if (k === OP.PLANE) s += node ? ` node ${node.id}` : '';
     if (k === OP.LEAF) s += ` node ${trace.index[i]}`;
     if (k === OP.PRIM) s += ` prim ${trace.index[i]}` + (trace.hit[i] ? ` hit at t=${fmt(trace.t[i])}` : ' miss');
     if (k === OP.REPEAT) s += ` prim ${trace.index[i]} (tested before)`;
+    if ((k === OP.PRIM || k === OP.REPEAT) && node) s += node.leaf ? ` in ${view.gridResolution ? cellName(view, node) : 'leaf ' + node.id}` : '';
     return s;
+  }
+
+  // A grid's cell by its coordinates (node 1 + cellIndex of a grid's view), else by its node.
+  function cellName(view, node) {
+    const r = view.gridResolution;
+    const c = node.id - 1;
+    if (!r || node.depth !== 1 || c < 0 || c >= r[0] * r[1] * r[2]) return `node ${node.id}`;
+    return `cell (${c % r[0]}, ${Math.floor(c / r[0]) % r[1]}, ${Math.floor(c / (r[0] * r[1]))})`;
   }
 
   function addRays(view, meta, data) {
@@ -591,6 +609,7 @@
         const start = o.map((v, a) => v + Math.max(tMin, 0) * d[a]), end = o.map((v, a) => v + tEnd * d[a]);
         const ray = lines([start, end], COLOURS.ray, 1);
         ray.material.depthTest = false;
+        ray.material.transparent = true;  // drawn after the see-through mesh
         ray.renderOrder = 10;
         view.groups.rays.add(ray);
       }
@@ -682,7 +701,8 @@
           if (!finite3(p)) continue;
           const g = new THREE.BufferGeometry();
           g.setAttribute('position', new THREE.BufferAttribute(new Float32Array(p), 3));
-          const m = new THREE.Points(g, new THREE.PointsMaterial({ color: colour, size: 14, sizeAttenuation: false, depthTest: false }));
+          // Transparent, so it is drawn in the last pass, after the see-through mesh, by its renderOrder.
+          const m = new THREE.Points(g, new THREE.PointsMaterial({ color: colour, size: 14, sizeAttenuation: false, depthTest: false, transparent: true }));
           m.renderOrder = 20;
           markers.add(m);
         }
@@ -743,8 +763,10 @@
       figure.append(img, mark, el('figcaption', captions[key]));
       $('images').appendChild(figure);
       img.addEventListener('click', (event) => {
+        // The image's content box: its border is not part of it.
         const r = img.getBoundingClientRect();
-        pick(Math.floor(((event.clientX - r.left) / r.width) * width), Math.floor(((event.clientY - r.top) / r.height) * height));
+        const x = event.clientX - r.left - img.clientLeft, y = event.clientY - r.top - img.clientTop;
+        pick(Math.floor((x / img.clientWidth) * width), Math.floor((y / img.clientHeight) * height));
       });
     }
 
@@ -778,7 +800,7 @@
           }
           const g = new THREE.BufferGeometry();
           g.setAttribute('position', new THREE.BufferAttribute(new Float32Array(end), 3));
-          const m = new THREE.Points(g, new THREE.PointsMaterial({ color: COLOURS.hitMarker, size: 12, sizeAttenuation: false, depthTest: false }));
+          const m = new THREE.Points(g, new THREE.PointsMaterial({ color: COLOURS.hitMarker, size: 12, sizeAttenuation: false, depthTest: false, transparent: true }));
           m.renderOrder = 20;
           group.add(m);
         }
@@ -817,13 +839,20 @@
       // The domain.
       const [domain, dm] = canvas2d(200, 200);
       drawDomain(dm, s.domain, mapped, shape);
-      // The histogram against the exact counts.
-      const [hist, hg] = canvas2d(420, 200);
-      drawHistogram(hg, observed, expected);
+      // The histogram against the exact counts, and where the counts deviate.
+      const [hist, hg] = canvas2d(300, 200);
+      const [dev, dg] = canvas2d(300, 200);
+      const rows = Number(s.rows), cols = Number(s.cols);
+      const layout = rows > 0 && cols > 0 && rows * cols + 1 === observed.length && observed.length === expected.length;
+      drawHistogram(hg, layout ? marginal(observed, rows, cols) : observed, layout ? marginal(expected, rows, cols) : expected);
+      drawDeviations(dg, observed, expected, layout ? rows : 1, layout ? cols : observed.length);
       const row = el('div');
-      row.append(square, domain, hist);
+      row.append(square, domain, hist, dev);
       card.appendChild(row);
-      card.appendChild(el('p', `unit square | ${s.domain} | histogram (${s.cells}): bars the samples, line the exact counts`, 'info'));
+      card.appendChild(el('p', `the u in the unit square | the samples on the ${s.domain}` + (s.domain === 'sphere' ? ' (blue z >= 0, red below)' : '') +
+        ' | ' + (layout ? `histogram of z from ${fmt(s.zMin)} to 1: bars your samples, line the exact counts` : 'histogram per cell: bars your samples, line the exact counts') +
+        ' | each cell\'s deviation (O - E) / sqrt(E): blue fewer, red more than expected, white within 1' + (layout ? ' (rows z, columns phi)' : ''), 'info'));
+      card.appendChild(el('p', `cells: ${s.cells}`, 'info'));
       card.appendChild(el('p', `chi-square ${fmt(s.chiSquare)} with ${fmt(s.dof)} degrees of freedom: p = ${fmt(s.p)}`, 'info'));
       $('samplers').appendChild(card);
     });
@@ -896,19 +925,42 @@
   }
 
   function drawHistogram(g, observed, expected) {
-    g.fillStyle = '#fff'; g.fillRect(0, 0, 420, 200);
+    g.fillStyle = '#fff'; g.fillRect(0, 0, 300, 200);
     const n = Math.min(observed.length, expected.length);
     if (!n) return;
     let max = 0;
     for (let i = 0; i < n; ++i) max = Math.max(max, observed[i], expected[i]);
     if (!(max > 0) || !Number.isFinite(max)) return;
-    const w = 400 / n;
+    const w = 280 / n;
     g.fillStyle = '#8fb3ea';
     for (let i = 0; i < n; ++i) { const h = (observed[i] / max) * 180; g.fillRect(10 + i * w, 190 - h, Math.max(w - 0.3, 0.5), h); }
     g.strokeStyle = '#d62728'; g.lineWidth = 1.5;
     g.beginPath();
     for (let i = 0; i < n; ++i) { const x = 10 + (i + 0.5) * w, y = 190 - (expected[i] / max) * 180; i ? g.lineTo(x, y) : g.moveTo(x, y); }
     g.stroke();
+  }
+
+  // Per band: the sum of its cols cells.
+  function marginal(counts, rows, cols) {
+    const out = new Float64Array(rows);
+    for (let r = 0; r < rows; ++r) for (let c = 0; c < cols; ++c) out[r] += counts[r * cols + c];
+    return out;
+  }
+
+  function drawDeviations(g, observed, expected, rows, cols) {
+    g.fillStyle = '#fff'; g.fillRect(0, 0, 300, 200);
+    const w = 280 / cols, h = 180 / rows;
+    for (let r = 0; r < rows; ++r) for (let c = 0; c < cols; ++c) {
+      const i = r * cols + c;
+      if (!(expected[i] > 0)) continue;
+      const z = (observed[i] - expected[i]) / Math.sqrt(expected[i]);
+      const x = Math.max(-1, Math.min(1, (Math.abs(z) - 1) / 4)) * Math.sign(z);
+      const fade = Math.round(255 * (1 - Math.abs(x)));
+      g.fillStyle = x > 0 ? `rgb(255,${fade},${fade})` : `rgb(${fade},${fade},255)`;
+      if (Math.abs(z) <= 1) g.fillStyle = '#fff';
+      g.fillRect(10 + c * w, 190 - (r + 1) * h, Math.ceil(w), Math.ceil(h));
+    }
+    g.strokeStyle = '#999'; g.strokeRect(10, 10, 280, 180);
   }
 
   function seriesColour(i) { return ['#2f6fd6', '#d6472f', '#1fa83a', '#a855f7', '#e0a000', '#00a8c8', '#555'][i % 7]; }
