@@ -136,7 +136,12 @@ json answerJson(const RayAnswer& a) {
 void addStructure(const CaseView& view, const Quantiser& q, const std::vector<std::vector<uint32_t>>& studentNodes,
                   const std::vector<std::vector<uint32_t>>& expectedNodes, NodeSelection& selection, ViewerBlob& blob, json& meta) {
     const StructureView& s = *view.structure;
-    StructureDrawing drawing = view.acceleratorName.empty() ? drawLevels(s) : drawStructure(view.acceleratorName, s);
+    // The style first (with only the root drawn), to know what the budget counts; then the
+    // drawing of the nodes the page carries.
+    auto draw = [&](const NodeMask& drawn) { return view.acceleratorName.empty() ? drawLevels(s, drawn) : drawStructure(view.acceleratorName, s, drawn); };
+    NodeMask rootOnly(s.nodes.size(), false);
+    if (!rootOnly.empty()) rootOnly[0] = true;
+    StructureDrawing drawing = draw(rootOnly);
     std::vector<uint32_t> wanted;
     std::vector<bool> visited(s.nodes.size(), false);
     for (const auto* lists : {&studentNodes, &expectedNodes})
@@ -161,6 +166,9 @@ void addStructure(const CaseView& view, const Quantiser& q, const std::vector<st
     }
     size_t budget = drawing.style == DrawingStyle::Cells ? view.limits.maxCells : view.limits.maxNodes;
     selection = selectNodes(s, drawing.style, budget, wanted);
+    NodeMask carried(s.nodes.size(), false);
+    for (uint32_t v : selection.nodes) carried[v] = true;
+    drawing = draw(carried);
 
     const size_t count = selection.nodes.size();
     std::vector<uint32_t> id(count), primCount(count), primStart(count, kNoNode), prims;

@@ -18,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -223,7 +224,15 @@ void addImages(const SceneCaseRequest& request, const Scene& scene, const Accele
 
 SceneCase buildSceneCase(const SceneCaseRequest& request) {
     SceneCase out;
+    auto start = std::chrono::steady_clock::now();
+    auto seconds = [&start] {
+        auto now = std::chrono::steady_clock::now();
+        double s = std::chrono::duration<double>(now - start).count();
+        start = now;
+        return s;
+    };
     out.scene = std::make_unique<Scene>(loadGltf(request.scenePath));
+    out.loadSeconds = seconds();
     const Scene& scene = *out.scene;
     CaseView& view = out.view;
     view.scene = &scene;
@@ -234,7 +243,9 @@ SceneCase buildSceneCase(const SceneCaseRequest& request) {
     spec.name = request.acceleratorName;
     std::unique_ptr<Accelerator> accelerator = makeAccelerator(spec);
     PrimitiveSet primitives(scene);
+    seconds();
     accelerator->build(primitives);
+    out.buildSeconds = seconds();
     view.structure = accelerator->structure();
 
     // The rays: given, or a pixel's camera ray and a shadow ray to each point light from its hit.

@@ -42,6 +42,7 @@ struct SceneCase {
     std::unique_ptr<Scene> scene;  // the CaseView points into it
     CaseView view;
     std::unique_ptr<TemporaryDirectory> scratch;  // the PNGs the view's images name
+    double loadSeconds = 0.0, buildSeconds = 0.0;  // the scene's loading, the structure's build
 };
 
 // Throws rtlab::Error for a bad accelerator name or scene, and NotImplemented from a stub that

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstring>
 #include <limits>
+#include <tuple>
 #include <unordered_map>
 
 namespace rtlab::viewer {
@@ -51,17 +52,6 @@ std::vector<uint32_t> resolveTraceNodes(const StructureView& view, const Travers
                                         const std::vector<GridCell>& cells, const std::array<int, 3>& resolution) {
     std::vector<uint32_t> nodes(trace.ops.size(), kUnresolved);
     const size_t n = view.nodes.size();
-    bool anyBox = std::any_of(trace.ops.begin(), trace.ops.end(), [](const TraceOp& op) { return op.kind == TraceOpKind::BoxTest; });
-    std::unordered_multimap<uint64_t, uint32_t> byBounds;
-    if (anyBox)
-        for (uint32_t i = 0; i < n; ++i) byBounds.emplace(boundsKey(view.nodes[i].bounds), i);
-    // Nodes by their primitive lists, for the runs of primitive tests.
-    std::unordered_multimap<uint64_t, uint32_t> byList;
-    for (uint32_t i = 0; i < n; ++i) {
-        const StructureNode& node = view.nodes[i];
-        if (node.primCount == 0 || uint64_t(node.firstPrim) + node.primCount > view.primIndices.size()) continue;
-        byList.emplace(listKey(view.primIndices.data() + node.firstPrim, node.primCount), i);
-    }
     // Parents, to tell apart nodes with the same bounds (a BVH child as large as its parent): a
     // walk tests a node after its parent and once.
     std::vector<uint32_t> parentOf(n, kUnresolved);
@@ -71,6 +61,45 @@ std::vector<uint32_t> resolveTraceNodes(const StructureView& view, const Travers
             if (view.children[c] < n && parentOf[view.children[c]] == kUnresolved && view.children[c] != 0) parentOf[view.children[c]] = i;
     }
     std::vector<bool> met(n, false);
+    // Where a box test's node is looked for: first among the root and the children of the nodes
+    // met so far (what a walk can test next), then, for a walk that jumps, among all nodes by
+    // their bounds (built on the first such miss: a million-node tree costs its time once).
+    std::vector<uint32_t> frontier;
+    if (n > 0) frontier.push_back(0);
+    std::unordered_multimap<uint64_t, uint32_t> byBounds;
+    bool byBoundsBuilt = false;
+    // Where a run of primitive tests' node is looked for: the nodes the ray's line passes through
+    // (found from the root down), then all nodes, each by its list.
+    std::unordered_multimap<uint64_t, uint32_t> alongRay, byList;
+    bool alongRayBuilt = false, byListBuilt = false;
+    auto addByList = [&](std::unordered_multimap<uint64_t, uint32_t>& map, uint32_t i) {
+        const StructureNode& node = view.nodes[i];
+        if (node.primCount == 0 || uint64_t(node.firstPrim) + node.primCount > view.primIndices.size()) return;
+        map.emplace(listKey(view.primIndices.data() + node.firstPrim, node.primCount), i);
+    };
+    auto buildAlongRay = [&] {
+        alongRayBuilt = true;
+        std::vector<uint32_t> stack;
+        std::vector<bool> seen(n, false);
+        if (n > 0) stack.push_back(0);
+        while (!stack.empty()) {
+            uint32_t v = stack.back();
+            stack.pop_back();
+            if (seen[v]) continue;
+            seen[v] = true;
+            const StructureNode& node = view.nodes[v];
+            if (entryDistance(node.bounds, ray) == std::numeric_limits<double>::infinity()) continue;
+            addByList(alongRay, v);
+            for (uint64_t c = node.firstChild; c < uint64_t(node.firstChild) + node.childCount && c < view.children.size(); ++c)
+                if (view.children[c] < n) stack.push_back(view.children[c]);
+        }
+    };
+    auto isCandidate = [&](uint32_t v, const std::vector<uint32_t>& run) {
+        const StructureNode& node = view.nodes[v];
+        return node.primCount == run.size() && uint64_t(node.firstPrim) + node.primCount <= view.primIndices.size() &&
+               std::equal(run.begin(), run.end(), view.primIndices.begin() + node.firstPrim);
+    };
+
     bool grid = isGrid(view, resolution);
     size_t cellStep = 0;
     double lastEntry = -std::numeric_limits<double>::infinity();
@@ -84,17 +113,29 @@ std::vector<uint32_t> resolveTraceNodes(const StructureView& view, const Travers
             // Of the nodes with these bounds: the first one not met yet whose parent was, else the
             // first not met yet, else the first.
             uint32_t best[3] = {kUnresolved, kUnresolved, kUnresolved};
-            auto [from, to] = byBounds.equal_range(boundsKey(box));
-            for (auto it = from; it != to; ++it) {
-                uint32_t v = it->second;
-                if (!sameBits(view.nodes[v].bounds, box)) continue;
+            auto consider = [&](uint32_t v) {
+                if (!sameBits(view.nodes[v].bounds, box)) return;
                 bool parentMet = v == 0 || (parentOf[v] != kUnresolved && met[parentOf[v]]);
                 if (!met[v] && parentMet) best[0] = std::min(best[0], v);
                 if (!met[v]) best[1] = std::min(best[1], v);
                 best[2] = std::min(best[2], v);
+            };
+            for (uint32_t v : frontier) consider(v);
+            if (best[0] == kUnresolved) {
+                if (!byBoundsBuilt) {
+                    for (uint32_t v = 0; v < n; ++v) byBounds.emplace(boundsKey(view.nodes[v].bounds), v);
+                    byBoundsBuilt = true;
+                }
+                auto [from, to] = byBounds.equal_range(boundsKey(box));
+                for (auto it = from; it != to; ++it) consider(it->second);
             }
             nodes[i] = best[0] != kUnresolved ? best[0] : best[1] != kUnresolved ? best[1] : best[2];
-            if (nodes[i] != kUnresolved) met[nodes[i]] = true;
+            if (nodes[i] != kUnresolved && !met[nodes[i]]) {
+                met[nodes[i]] = true;
+                const StructureNode& node = view.nodes[nodes[i]];
+                for (uint64_t c = node.firstChild; c < uint64_t(node.firstChild) + node.childCount && c < view.children.size(); ++c)
+                    if (view.children[c] < n) frontier.push_back(view.children[c]);
+            }
             break;
         }
         case TraceOpKind::LeafEntry:
@@ -125,13 +166,19 @@ std::vector<uint32_t> resolveTraceNodes(const StructureView& view, const Travers
         if (!named) {
             uint32_t best = kUnresolved;
             double bestEntry = std::numeric_limits<double>::infinity();
-            auto [from, to] = byList.equal_range(listKey(run.data(), run.size()));
+            uint64_t key = listKey(run.data(), run.size());
+            if (!alongRayBuilt) buildAlongRay();
+            auto [from, to] = alongRay.equal_range(key);
+            if (from == to) {
+                if (!byListBuilt) {
+                    for (uint32_t v = 0; v < n; ++v) addByList(byList, v);
+                    byListBuilt = true;
+                }
+                std::tie(from, to) = byList.equal_range(key);
+            }
             for (auto it = from; it != to; ++it) {
-                const StructureNode& node = view.nodes[it->second];
-                if (node.primCount != run.size() ||
-                    !std::equal(run.begin(), run.end(), view.primIndices.begin() + node.firstPrim))
-                    continue;
-                double entry = entryDistance(node.bounds, ray);
+                if (!isCandidate(it->second, run)) continue;
+                double entry = entryDistance(view.nodes[it->second].bounds, ray);
                 // Front to back: the nearest candidate not before the node resolved last.
                 if (entry >= lastEntry - 1e-6 * std::abs(lastEntry) && (best == kUnresolved || entry < bestEntry)) {
                     best = it->second;

@@ -46,7 +46,7 @@ public:
 
     size_t sections() const { return sections_; }
     const std::vector<uint8_t>& bytes() const { return bytes_; }
-    // The block deflated (zlib, level 6) and in base64, as the page reads it.
+    // The block deflated (zlib, level 1) and in base64, as the page reads it.
     std::string deflatedBase64() const;
 
 private:

@@ -82,8 +82,8 @@ BvhOptions bvhOptionsFrom(const AcceleratorParameters& parameters) {
 }
 
 // The viewer's BVH: a depth slider over its boxes, each node's share of the SAH cost on hover.
-StructureDrawing drawBvh(const StructureView& view) {
-    StructureDrawing drawing = drawLevels(view);
+StructureDrawing drawBvh(const StructureView& view, const NodeMask& drawn) {
+    StructureDrawing drawing = drawLevels(view, drawn);
     drawing.valueName = "SAH share";
     drawing.values = sahShares(view);
     return drawing;

@@ -52,15 +52,15 @@ std::vector<Vec3> planeInCell(const StructurePlane& plane, const Bounds3f& box, 
 
 }  // namespace
 
-StructureDrawing drawLevels(const StructureView&) { return StructureDrawing{}; }
+StructureDrawing drawLevels(const StructureView&, const NodeMask&) { return StructureDrawing{}; }
 
-StructureDrawing drawCells(const StructureView&) {
+StructureDrawing drawCells(const StructureView&, const NodeMask&) {
     StructureDrawing drawing;
     drawing.style = DrawingStyle::Cells;
     return drawing;
 }
 
-StructureDrawing drawPlanes(const StructureView& view) {
+StructureDrawing drawPlanes(const StructureView& view, const NodeMask& drawn) {
     StructureDrawing drawing;
     drawing.style = DrawingStyle::Planes;
     if (view.nodes.empty() || view.planes.size() != view.nodes.size()) return drawing;
@@ -75,7 +75,7 @@ StructureDrawing drawPlanes(const StructureView& view) {
     while (!stack.empty()) {
         Pending p = std::move(stack.back());
         stack.pop_back();
-        if (p.node >= view.nodes.size() || seen[p.node]) continue;
+        if (p.node >= view.nodes.size() || seen[p.node] || (!drawn.empty() && (p.node >= drawn.size() || !drawn[p.node]))) continue;
         seen[p.node] = true;
         const StructureNode& node = view.nodes[p.node];
         const StructurePlane& plane = view.planes[p.node];
@@ -107,9 +107,9 @@ std::vector<float> sahShares(const StructureView& view) {
     return shares;
 }
 
-StructureDrawing drawStructure(const std::string& acceleratorName, const StructureView& view) {
+StructureDrawing drawStructure(const std::string& acceleratorName, const StructureView& view, const NodeMask& drawn) {
     const AcceleratorType& type = acceleratorTypeOf(acceleratorName);
-    return type.draw ? type.draw(view) : drawLevels(view);
+    return type.draw ? type.draw(view, drawn) : drawLevels(view, drawn);
 }
 
 }  // namespace rtlab

@@ -35,19 +35,23 @@ struct StructureDrawing {
     std::vector<DrawnPlane> planes;  // Planes: one per interior node with a plane
 };
 
-using StructureDrawer = StructureDrawing (*)(const StructureView&);
+// drawn: per node, whether the page shows it (a deep tree's page shows its top levels and the
+// nodes near a ray, viewer/structure_selection.h), so that per-node work is done for those
+// alone; every drawn node's ancestors are drawn too. Empty: every node.
+using NodeMask = std::vector<bool>;
+using StructureDrawer = StructureDrawing (*)(const StructureView& view, const NodeMask& drawn);
 
-StructureDrawing drawLevels(const StructureView& view);
-StructureDrawing drawCells(const StructureView& view);
-// Each interior node's plane (view.planes) clipped to the node's box and to the sides of its
-// ancestors' planes it lies on: a KD-tree's rectangles and a BSP's convex polygons alike.
-StructureDrawing drawPlanes(const StructureView& view);
+StructureDrawing drawLevels(const StructureView& view, const NodeMask& drawn);
+StructureDrawing drawCells(const StructureView& view, const NodeMask& drawn);
+// Each drawn interior node's plane (view.planes) clipped to the node's box and to the sides of
+// its ancestors' planes it lies on: a KD-tree's rectangles and a BSP's convex polygons alike.
+StructureDrawing drawPlanes(const StructureView& view, const NodeMask& drawn);
 
 // Each node's share of the tree's SAH cost (sahCost, structure_view.h), for a BVH's hover text.
 std::vector<float> sahShares(const StructureView& view);
 
 // The drawing of the structure an --accel name builds (its registry entry's draw, or drawLevels).
 // Throws rtlab::Error for a name the registry does not know.
-StructureDrawing drawStructure(const std::string& acceleratorName, const StructureView& view);
+StructureDrawing drawStructure(const std::string& acceleratorName, const StructureView& view, const NodeMask& drawn = {});
 
 }  // namespace rtlab

@@ -285,6 +285,23 @@ def main():
     cases = run(os.path.join(build, "tests", "viewer_test_cases"), os.path.join(out, "cases"), source)
     dda_cells = json.loads(cases.stdout) if cases.returncode == 0 else None
 
+    # Scale (docs/viewer.md#scale): the bunny's folder at most 2 MB, the sphereflake's at most
+    # 64 MB, and a viewer of the engine written in at most 2 s beyond loading and building.
+    bunny, engine = os.path.join(build, "models", "bunny.gltf"), os.path.join(build, "models", "engine.glb")
+    folder_bytes = lambda d: sum(os.path.getsize(os.path.join(d, f)) for f in os.listdir(d))
+    for accel in ["bvh", "grid", "kdtree"]:
+        folder = os.path.join(out, "bunny-" + accel)
+        run(solution, "view", bunny, "--accel", accel, "--ray", "0 5 24 0.01 0.02 -1", "-o", folder)
+        check(os.path.isdir(folder) and folder_bytes(folder) <= 2_000_000, f"the bunny's {accel} viewer is larger than 2 MB")
+    for accel in ["bvh", "grid"]:
+        result = run(solution, "view", engine, "--accel", accel, "--ray", "0 0 500 0.01 0.02 -1", "-o", os.path.join(out, "engine-" + accel))
+        rest = float(result.stdout.split("the rest ")[1].split(" s")[0]) if "the rest " in result.stdout else 99
+        check(rest <= 2.0, f"the engine's {accel} viewer took {rest} s beyond loading and building")
+    sphereflake = os.path.join(out, "sphereflake.glb")
+    run(solution, "scene", "generate", "sphereflake", "-o", sphereflake)
+    run(solution, "view", sphereflake, "--accel", "bvh", "--ray", "0 0 5 0.01 0.02 -1", "-o", os.path.join(out, "sphereflake"))
+    check(folder_bytes(os.path.join(out, "sphereflake")) <= 64_000_000, "the sphereflake's viewer is larger than 64 MB")
+
     profile = tempfile.mkdtemp(prefix="rtlab-viewer-chromium-")
     browser = start_browser(profile)
     try:
@@ -298,6 +315,18 @@ def main():
             hits = [op for op in trace if op["kind"] == 4 and op["hit"]]
             if accel == "bvh" and check(hits, "bvh: the trace has no hit"):
                 check_hit_marker(browser, folder, accel, ray, hits[-1]["t"], shots)
+        # The sphereflake opens, draws its million triangles and orbits under a drag.
+        started = time.time()
+        open_page(browser, os.path.join(out, "sphereflake"), "#mesh=solid")
+        check(browser.execute_script("return document.body.dataset.triangles") == "1062864", "sphereflake: not every triangle is drawn")
+        frames = int(browser.execute_script("return document.body.dataset.frames"))
+        from selenium.webdriver.common.action_chains import ActionChains
+        canvas = browser.find_element(By.ID, "view3d")
+        ActionChains(browser).move_to_element(canvas).click_and_hold().move_by_offset(120, 40).release().perform()
+        wait_for_frame(browser)
+        check(int(browser.execute_script("return document.body.dataset.frames")) > frames, "sphereflake: a drag does not orbit")
+        print(f"sphereflake: opened and orbited in {time.time() - started:.1f} s")
+        screenshot(browser, os.path.join(shots, "sphereflake.png"))
         open_page(browser, os.path.join(out, "student"))
         check("a0 intersectTriangle" in browser.find_element(By.ID, "notes").text, "student: the stub that stopped the walk is not named")
         check(browser.execute_script("return document.querySelectorAll('#expected-steps li[data-kind]').length") > 0,

@@ -266,8 +266,10 @@
     const indices = data.get('mesh.index', Uint32Array);
     const vertexCount = Math.floor(positions.length / 3);
     const materials = {
-      ghost: new THREE.MeshLambertMaterial({ color: 0x9aa3b5, flatShading: true, transparent: true, opacity: 0.22, depthWrite: false, side: THREE.DoubleSide }),
-      solid: new THREE.MeshLambertMaterial({ color: 0xb8bfcc, flatShading: true, side: THREE.DoubleSide }),
+      // Phong, because r111's Lambert material lights per vertex and has no flat shading: the
+      // mesh carries no normals, each triangle is shaded by its own.
+      ghost: new THREE.MeshPhongMaterial({ color: 0x9aa3b5, flatShading: true, shininess: 0, transparent: true, opacity: 0.22, depthWrite: false, side: THREE.DoubleSide }),
+      solid: new THREE.MeshPhongMaterial({ color: 0xb8bfcc, flatShading: true, shininess: 0, side: THREE.DoubleSide }),
     };
     const meshes = [];
     if (vertexCount > 0 && indices.length >= 3) {
@@ -279,10 +281,13 @@
       g.setAttribute('position', new THREE.BufferAttribute(positions, 3, true));
       g.setIndex(new THREE.BufferAttribute(valid, 1));
       const mesh = new THREE.Mesh(g, materials.ghost);
+      // three r111 bounds a normalised attribute by its raw integers, which would cull the mesh.
+      mesh.frustumCulled = false;
       mesh.scale.set(extent[0] || 1, extent[1] || 1, extent[2] || 1);
       mesh.position.set(...frame.lo);
       view.groups.mesh.add(mesh);
       meshes.push(mesh);
+      document.body.dataset.triangles = String(valid.length / 3);
     }
     const spheres = data.get('mesh.sphere', Float32Array);
     for (let i = 0; i + 3 < spheres.length && i < 4 * 2000; i += 4) {

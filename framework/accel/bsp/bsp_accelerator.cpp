@@ -58,8 +58,8 @@ AcceleratorType bspType() {
                 return std::make_unique<BspAccelerator>(options);
             },
             {}};  // no bench rows: an autopartition is taught, not tuned
-    type.draw = [](const StructureView& view) {
-        StructureDrawing drawing = drawPlanes(view);
+    type.draw = [](const StructureView& view, const NodeMask& drawn) {
+        StructureDrawing drawing = drawPlanes(view, drawn);
         drawing.boxesMeaningful = false;  // every node carries the tree's box
         return drawing;
     };
