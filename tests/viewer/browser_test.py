@@ -273,7 +273,7 @@ def main():
         return result
 
     pages = {}
-    for accel in ["bvh", "grid", "grid2", "octree", "kdtree", "bsp"]:
+    for accel in ["brute", "bvh", "grid", "grid2", "octree", "kdtree", "bsp"]:
         folder = os.path.join(out, accel)
         run(solution, "view", cornell, "--accel", accel, "--ray", ray_text, "-o", folder)
         run(solution, "view", cornell, "--accel", accel, "--rays", os.path.join(out, "one.rays"), "--trace-out", folder + "-trace")
@@ -312,6 +312,15 @@ def main():
             open_page(browser, folder, "#depth=2")
             screenshot(browser, os.path.join(shots, accel + ".png"))
             check_steps(browser, accel, trace)
+            if accel == "bvh":
+                # Hovering a box shows the node's numbers (a2's SAH share among them).
+                canvas = browser.find_element(By.ID, "view3d")
+                from selenium.webdriver.common.action_chains import ActionChains
+                ActionChains(browser).move_to_element_with_offset(canvas, 20, 40).perform()
+                wait_for_frame(browser)
+                hover = browser.find_element(By.ID, "hover").text
+                check("SAH share" in hover, f"bvh: hovering a box does not show its SAH share: {hover!r}")
+                screenshot(browser, os.path.join(shots, "bvh-hover.png"))
             hits = [op for op in trace if op["kind"] == 4 and op["hit"]]
             if accel == "bvh" and check(hits, "bvh: the trace has no hit"):
                 check_hit_marker(browser, folder, accel, ray, hits[-1]["t"], shots)
@@ -356,7 +365,7 @@ def main():
         shutil.rmtree(profile, ignore_errors=True)
 
     if args.screenshots:
-        for name in ["bvh", "grid", "octree", "kdtree", "bsp", "pixel", "samplers", "dda", "grid2"]:
+        for name in ["brute", "bvh", "bvh-hover", "grid", "octree", "kdtree", "bsp", "pixel", "samplers", "dda", "sphereflake"]:
             shutil.copy(os.path.join(shots, name + ".png"), os.path.join(args.screenshots, "viewer-" + name + ".png"))
     print(f"browser_test: {len(FAILURES)} failure(s); screenshots in {shots}")
     return 1 if FAILURES else 0

@@ -503,7 +503,7 @@
       while (group.children.length) group.remove(group.children[0]);
       if (best < 0) { box.hidden = true; view.render(); return; }
       const node = nodes[best];
-      let textLines = [`node ${node.id}, depth ${node.depth}`, node.leaf ? `leaf of ${node.count} primitives` : `interior, ${node.count} primitives below or in it`];
+      let textLines = [`node ${node.id}, depth ${node.depth}`, node.leaf ? `leaf of ${node.count} primitives` : 'interior' + (node.count ? `, ${node.count} primitives in it` : '')];
       if (node.value !== null && meta.structure.valueName) textLines.push(`${meta.structure.valueName}: ${(100 * node.value).toFixed(2)} %`);
       box.textContent = textLines.join('\n');
       box.hidden = false;
