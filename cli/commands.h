@@ -16,6 +16,7 @@ void addRefsCommand(CLI::App& app);
 void addCompareCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
 void addReleaseCommand(CLI::App& app);
+void addViewCommand(CLI::App& app);
 
 // Runs rtlab with the given arguments; returns the process exit code.
 int run(int argc, char** argv);

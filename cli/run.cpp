@@ -22,6 +22,7 @@ int run(int argc, char** argv) {
     addCompareCommand(app);
     addBenchCommand(app);
     addReleaseCommand(app);
+    addViewCommand(app);
     // CLI11 reports a word that is no subcommand as "A subcommand is required", which hides
     // the typo: name it and list what there is instead.
     if (argc > 1 && argv[1][0] != '-') {

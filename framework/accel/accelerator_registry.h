@@ -8,6 +8,7 @@
 #pragma once
 
 #include "framework/accel/accelerator.h"
+#include "framework/accel/structure_drawing.h"
 
 #include <functional>
 #include <map>
@@ -51,6 +52,9 @@ struct AcceleratorType {
     // How fast it renders on this build, among the tuned structures of fast/ (0: not one).
     // rtlab-solution renders with the highest-ranked by default; students' structures are 0.
     int speedRank = 0;
+    // How the viewer draws its StructureView (structure_drawing.h), defined beside the
+    // structure; null: drawLevels, a tree of boxes.
+    StructureDrawer draw = nullptr;
 
     const AcceleratorOption* option(std::string_view key) const;
     // Parses "k=v,k=v" (empty for all defaults); throws rtlab::Error naming what is wrong.
@@ -65,6 +69,9 @@ struct AcceleratorRegistration {
 };
 
 const AcceleratorType* findAcceleratorType(std::string_view name);
+// The structure a full --accel name builds ("bvh-median", "grid:C=9": bvh, grid); throws
+// rtlab::Error as makeAccelerator does for a name it cannot build (make_accelerator.cpp).
+const AcceleratorType& acceleratorTypeOf(const std::string& name);
 // Every structure this executable has, the framework's first, then the registered ones by name.
 std::vector<const AcceleratorType*> acceleratorTypes();
 

@@ -39,12 +39,14 @@ bool BvhAccelerator::occluded(const Ray& ray, TraversalStats& stats) const {
     return occludedBvh(bvh_, traversal);
 }
 
-StructureView BvhAccelerator::structure() const {
+StructureView BvhAccelerator::structure() const { return bvhStructureView(bvh_); }
+
+StructureView bvhStructureView(const Bvh& bvh) {
     StructureView view;
-    view.primIndices = bvh_.primIndices;
-    view.nodes.reserve(bvh_.nodes.size());
-    for (uint32_t i = 0; i < bvh_.nodes.size(); ++i) {
-        const BvhNode& node = bvh_.nodes[i];
+    view.primIndices = bvh.primIndices;
+    view.nodes.reserve(bvh.nodes.size());
+    for (uint32_t i = 0; i < bvh.nodes.size(); ++i) {
+        const BvhNode& node = bvh.nodes[i];
         StructureNode out;
         out.bounds = node.bounds;
         if (node.isLeaf()) {
@@ -79,16 +81,26 @@ BvhOptions bvhOptionsFrom(const AcceleratorParameters& parameters) {
     return options;
 }
 
+// The viewer's BVH: a depth slider over its boxes, each node's share of the SAH cost on hover.
+StructureDrawing drawBvh(const StructureView& view, const NodeMask& drawn) {
+    StructureDrawing drawing = drawLevels(view, drawn);
+    drawing.valueName = "SAH share";
+    drawing.values = sahShares(view);
+    return drawing;
+}
+
 AcceleratorType bvhType() {
     std::vector<AcceleratorOption> options = bvhTreeOptions();
     options.push_back({"traversal", "ordered (near child first) or recursive (the lecture's pseudocode)", "ordered", 0, 0,
                        false, {"ordered", "recursive"}});
-    return {"bvh", "binary BVH (a1, a2)", options,
+    AcceleratorType type{"bvh", "binary BVH (a1, a2)", options,
             [](const AcceleratorParameters& p) {
                 return std::make_unique<BvhAccelerator>(bvhOptionsFrom(p), p.word("traversal") == "recursive");
             },
             {"bvh-median", "bvh-middle", "bvh-equal", "bvh-sah", "bvh-buckets:4", "bvh-buckets:8", "bvh-buckets:12",
              "bvh-buckets:16", "bvh-buckets:32"}};
+    type.draw = drawBvh;
+    return type;
 }
 
 }  // namespace rtlab

@@ -12,6 +12,11 @@ namespace rtlab {
 // What buildBvh needs to know of each primitive: bounds, centroid and id, in id order.
 std::vector<BuildPrimitive> buildPrimitivesOf(const PrimitiveSet& primitives);
 
+// A BVH as the grader's StructureView: its nodes in order, children {first, second}.
+StructureView bvhStructureView(const Bvh& bvh);
+// How the viewer draws a binary BVH: boxes by level, each node's SAH share (structure_drawing.h).
+StructureDrawing drawBvh(const StructureView& view, const NodeMask& drawn);
+
 // The tree options of a bvh, bvh4 or bvh8 name (split, B, leaf, axes).
 BvhOptions bvhOptionsFrom(const AcceleratorParameters& parameters);
 

@@ -80,6 +80,8 @@ std::string acceleratorNames() {
     return text + "  older names: <structure>-<split> and <structure>-buckets:<B>, e.g. bvh-median, bvh-buckets:12";
 }
 
+const AcceleratorType& acceleratorTypeOf(const std::string& name) { return *parseName(name).type; }
+
 std::unique_ptr<Accelerator> makeAccelerator(const AcceleratorSpec& spec) {
     if (spec.maxLeaf < 1 || spec.maxLeaf > 65535)
         throw Error("--max-leaf " + std::to_string(spec.maxLeaf) + " is out of range (1..65535)");

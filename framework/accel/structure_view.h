@@ -1,6 +1,7 @@
 // A read-only, accelerator-neutral view of a built structure, so the grader can check
 // invariants and recompute SAH cost without trusting the accelerator: nodes with bounds, their
-// children and the primitives of leaves.
+// children and the primitives of leaves; for trees that cut space by planes (KD-tree, BSP),
+// each interior node's plane, which the viewer draws.
 #pragma once
 
 #include "framework/core/bounds.h"
@@ -18,10 +19,21 @@ struct StructureNode {
     uint32_t primCount = 0;
 };
 
+// The plane dot(normal, x) = offset; a zero normal for a node that has none.
+struct StructurePlane {
+    DVec3 normal{0.0};
+    double offset = 0.0;
+
+    bool exists() const { return normal != DVec3(0.0); }
+};
+
 struct StructureView {
     std::vector<StructureNode> nodes;   // nodes[0] is the root
     std::vector<uint32_t> children;     // node indices
     std::vector<uint32_t> primIndices;  // primitive ids referenced by leaves
+    // Empty, or one per node: the plane an interior node splits its space by. A BSP node's
+    // children are {back, front}: front is dot(normal, x) > offset; a KD-tree's {below, above}.
+    std::vector<StructurePlane> planes;
 };
 
 // SAH cost of a tree (docs/a2-sah.md): sum over interior nodes of C_trav * S(n)/S(root) plus

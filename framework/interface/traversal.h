@@ -10,6 +10,8 @@
 //                                   several cells is tested once per ray, repeats are counted
 // The counters are the framework's: feedback for students and the bench, never the grader's
 // evidence (that is the CPU time it measures itself, docs/grading.md#isolation-and-trust).
+// When the stats point at a TraversalTrace (traversal_trace.h), every operation is also
+// recorded there in order, for the viewer.
 #pragma once
 
 #include "framework/core/hit.h"
@@ -17,6 +19,7 @@
 #include "framework/interface/a0_intersect.h"
 #include "framework/interface/mailbox.h"
 #include "framework/interface/traversal_stats.h"
+#include "framework/interface/traversal_trace.h"
 
 #include <array>
 #include <vector>
@@ -32,7 +35,7 @@ bool intersectPrimitive(const PrimitiveSet& primitives, uint32_t prim, const Ray
 class Traversal {
 public:
     Traversal(const PrimitiveSet& primitives, const Ray& ray, TraversalStats& stats)
-        : primitives_(primitives), ray_(ray), inverse_(ray), stats_(stats) {
+        : primitives_(primitives), ray_(ray), inverse_(ray), stats_(stats), trace_(stats.trace) {
         ++stats_.rays;
     }
 
@@ -45,31 +48,45 @@ public:
     // entry distance, which ordered traversals use to skip far children.
     bool hitsBox(const Bounds3f& box, float tMax, float* tEnter) {
         ++stats_.nodeVisits;
-        return intersectBox(box, inverse_, ray_.tMin, tMax, tEnter);
+        bool hit = intersectBox(box, inverse_, ray_.tMin, tMax, tEnter);
+        if (trace_) trace_->addBox(box, hit, tEnter ? *tEnter : 0.0f, tMax);
+        return hit;
     }
 
-    void countCellStep() { ++stats_.cellSteps; }
+    void countCellStep() {
+        ++stats_.cellSteps;
+        if (trace_) trace_->add(TraceOp{TraceOpKind::CellStep});
+    }
     // A leaf of a spatial tree the walk enters, by its node index: counted as a cell step, and
     // listed for the grader's visit-order test when a list is set.
     void enterLeaf(uint32_t node) {
         ++stats_.cellSteps;
         if (entered_) entered_->push_back(node);
+        if (trace_) trace_->add(TraceOp{TraceOpKind::LeafEntry, 0, 0, node});
     }
-    void countPlaneStep() { ++stats_.planeSteps; }
+    void countPlaneStep() {
+        ++stats_.planeSteps;
+        if (trace_) trace_->add(TraceOp{TraceOpKind::PlaneStep});
+    }
 
     // One primitive test for a closest-hit query: updates hit when prim is hit in
     // (tMin, hit.t].
     bool intersect(uint32_t prim, Hit& hit) {
         ++stats_.primitiveTests;
         if (tested_) tested_->push_back(prim);
-        return intersectPrimitive(primitives_, prim, ray_, hit);
+        float closest = hit.t;
+        bool found = intersectPrimitive(primitives_, prim, ray_, hit);
+        if (trace_) trace_->add(TraceOp{TraceOpKind::PrimitiveTest, uint8_t(found), 0, prim, found ? hit.t : 0.0f, closest});
+        return found;
     }
     // One primitive test for an any-hit query: does prim block the segment (tMin, tMax]?
     bool occludes(uint32_t prim) {
         ++stats_.primitiveTests;
         Hit hit;
         hit.t = ray_.tMax;
-        return intersectPrimitive(primitives_, prim, ray_, hit);
+        bool found = intersectPrimitive(primitives_, prim, ray_, hit);
+        if (trace_) trace_->add(TraceOp{TraceOpKind::PrimitiveTest, uint8_t(found), 0, prim, found ? hit.t : 0.0f, ray_.tMax});
+        return found;
     }
 
     // Lists every primitive a closest-hit query tests, in order, into *list (null: no list): the
@@ -87,6 +104,7 @@ private:
     bool firstVisit(uint32_t prim) {
         if (mailbox_.firstVisit(prim)) return true;
         ++stats_.mailboxRepeats;
+        if (trace_) trace_->add(TraceOp{TraceOpKind::MailboxRepeat, 0, 0, prim});
         return false;
     }
 
@@ -97,6 +115,7 @@ private:
     Mailbox mailbox_;
     std::vector<uint32_t>* tested_ = nullptr;
     std::vector<uint32_t>* entered_ = nullptr;
+    TraversalTrace* trace_;
 };
 
 }  // namespace rtlab

@@ -24,15 +24,30 @@ bool BspAccelerator::occluded(const Ray& ray, TraversalStats& stats) const {
     return occludedBsp(tree_, traversal);
 }
 
-StructureView BspAccelerator::structure() const {
+StructureView BspAccelerator::structure() const { return bspStructureView(tree_); }
+
+StructureView bspStructureView(const BspTree& tree) {
     StructureView view;
-    view.primIndices = tree_.primIndices;
-    for (const BspNode& node : tree_.nodes) view.nodes.push_back(StructureNode{tree_.bounds, 0, 0, node.firstPrim, node.primCount});
+    view.primIndices = tree.primIndices;
+    for (uint32_t i = 0; i < tree.nodes.size(); ++i) {
+        const BspNode& node = tree.nodes[i];
+        StructureNode out{tree.bounds, 0, 0, node.firstPrim, node.primCount};
+        StructurePlane plane;
+        if (!node.leaf) {
+            out.firstChild = static_cast<uint32_t>(view.children.size());
+            out.childCount = 2;
+            view.children.push_back(i + 1);  // back: the node right after it
+            view.children.push_back(node.front);
+            plane = StructurePlane{node.normal, node.offset};
+        }
+        view.nodes.push_back(out);
+        view.planes.push_back(plane);
+    }
     return view;
 }
 
 AcceleratorType bspType() {
-    return {"bsp",
+    AcceleratorType type{"bsp",
             "BSP tree on the triangles' own planes, an autopartition (a5, optional)",
             {{"leaf", "a cell with at most this many primitives is a leaf", "2", 1, 65535, true, {}},
              {"depth", "depth limit", "40", 1, kBspMaxDepthLimit, true, {}}},
@@ -43,6 +58,12 @@ AcceleratorType bspType() {
                 return std::make_unique<BspAccelerator>(options);
             },
             {}};  // no bench rows: an autopartition is taught, not tuned
+    type.draw = [](const StructureView& view, const NodeMask& drawn) {
+        StructureDrawing drawing = drawPlanes(view, drawn);
+        drawing.boxesMeaningful = false;  // every node carries the tree's box
+        return drawing;
+    };
+    return type;
 }
 
 }  // namespace rtlab

@@ -6,6 +6,10 @@
 
 namespace rtlab {
 
+// A BSP tree as the grader's StructureView: every node with the tree's box, its children
+// {back, front} and its plane; interior nodes keep the primitives lying in their plane.
+StructureView bspStructureView(const BspTree& tree);
+
 class BspAccelerator final : public Accelerator {
 public:
     explicit BspAccelerator(const BspOptions& options) : options_(options) {}
@@ -13,7 +17,8 @@ public:
     void build(const PrimitiveSet& primitives) override;
     Hit intersect(const Ray& ray, TraversalStats& stats) const override;
     bool occluded(const Ray& ray, TraversalStats& stats) const override;
-    // The nodes without boxes (a BSP cell is a convex polytope): each with the tree's box.
+    // The nodes without boxes (a BSP cell is a convex polytope): each with the tree's box, its
+    // children {back, front} and its plane. Interior nodes keep the primitives lying in their plane.
     StructureView structure() const override;
     size_t memoryBytes() const override { return tree_.nodes.size() * sizeof(BspNode) + tree_.primIndices.size() * sizeof(uint32_t); }
 

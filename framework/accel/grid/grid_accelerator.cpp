@@ -33,7 +33,7 @@ StructureView GridAccelerator::structure() const {
 }
 
 AcceleratorType gridType() {
-    return {"grid",
+    AcceleratorType type{"grid",
             "uniform grid with the 3D-DDA (a3)",
             {{"C", "cells per primitive: the lecture's rule cells ~= C * N", "27", 1, 1000, false, {}},
              {"res", "most cells along any axis", "64", 1, 1024, true, {}},
@@ -46,6 +46,8 @@ AcceleratorType gridType() {
                 return std::make_unique<GridAccelerator>(options, p.word("insert") == "exact");
             },
             {"grid:C=1", "grid:C=3", "grid:C=9", "grid:C=27", "grid:C=81", "grid:insert=exact"}};
+    type.draw = drawCells;  // the occupied cells, by how many primitives they hold
+    return type;
 }
 
 }  // namespace rtlab

@@ -65,7 +65,7 @@ StructureView TwoLevelGridAccelerator::structure() const {
 }
 
 AcceleratorType twoLevelGridType() {
-    return {"grid2",
+    AcceleratorType type{"grid2",
             "two-level grid: crowded cells refined by their own grid (a3, beyond the lecture)",
             // The top grid only has to find the crowded regions: a coarse one leaves fewer empty
             // cells to step through around them (docs/a3-grid.md#beyond-the-lecture-two-level-grids).
@@ -81,6 +81,8 @@ AcceleratorType twoLevelGridType() {
                 return std::make_unique<TwoLevelGridAccelerator>(top, child, static_cast<uint32_t>(p.integer("refine")));
             },
             {"grid2"}};
+    type.draw = drawCells;  // the occupied cells of both levels
+    return type;
 }
 
 }  // namespace rtlab

@@ -7,6 +7,11 @@
 
 namespace rtlab {
 
+// A KD-tree as the grader's StructureView: every node with its box (the root's box cut by the
+// planes above it), depth first, below child first, and each interior node's plane. The tree
+// must be well formed (as a builder made it: children inside the array, no cycles).
+StructureView kdTreeStructureView(const KdTree& tree);
+
 enum class KdBuilder { NlogN, Sort };
 
 class KdTreeAccelerator final : public Accelerator {
@@ -16,7 +21,8 @@ public:
     void build(const PrimitiveSet& primitives) override;
     Hit intersect(const Ray& ray, TraversalStats& stats) const override;
     bool occluded(const Ray& ray, TraversalStats& stats) const override;
-    // Every node with its box (the root's box cut by the planes above it), below child first.
+    // Every node with its box (the root's box cut by the planes above it), below child first,
+    // and each interior node's plane.
     StructureView structure() const override;
     size_t memoryBytes() const override { return tree_.nodes.size() * sizeof(KdNode) + tree_.primIndices.size() * sizeof(uint32_t); }
 

@@ -24,15 +24,17 @@ bool OctreeAccelerator::occluded(const Ray& ray, TraversalStats& stats) const {
     return occludedOctree(octree_, traversal);
 }
 
-StructureView OctreeAccelerator::structure() const {
+StructureView OctreeAccelerator::structure() const { return octreeStructureView(octree_); }
+
+StructureView octreeStructureView(const Octree& octree) {
     StructureView view;
-    view.primIndices = octree_.primIndices;
-    view.nodes.resize(octree_.nodes.size());
-    if (octree_.nodes.empty()) return view;
-    view.nodes[0].bounds = octree_.root;
+    view.primIndices = octree.primIndices;
+    view.nodes.resize(octree.nodes.size());
+    if (octree.nodes.empty()) return view;
+    view.nodes[0].bounds = octree.root;
     // Parents come before their children in the array, so one pass hands every box down.
-    for (uint32_t i = 0; i < octree_.nodes.size(); ++i) {
-        const OctreeNode& node = octree_.nodes[i];
+    for (uint32_t i = 0; i < octree.nodes.size(); ++i) {
+        const OctreeNode& node = octree.nodes[i];
         StructureNode& out = view.nodes[i];
         if (node.isLeaf()) {
             out.firstPrim = node.primStart;
@@ -50,7 +52,7 @@ StructureView OctreeAccelerator::structure() const {
 }
 
 AcceleratorType octreeType() {
-    return {"octree",
+    AcceleratorType type{"octree",
             "octree with Revelles' parametric walk (a4)",
             {{"maxPrims", "a node with more primitives is split", "8", 1, 65535, true, {}},
              {"maxDepth", "deepest level (the root is 0)", "10", 0, 20, true, {}},
@@ -63,6 +65,8 @@ AcceleratorType octreeType() {
                 return std::make_unique<OctreeAccelerator>(options);
             },
             {"octree", "octree:insert=box", "octree:maxDepth=16"}};
+    type.draw = drawLevels;  // nodes by depth
+    return type;
 }
 
 }  // namespace rtlab

@@ -7,6 +7,11 @@
 
 namespace rtlab {
 
+// An octree as the grader's StructureView: the nodes with their boxes (childBox of the
+// parent's), children in index order. Children must come after their parent, as buildOctree
+// lays them out.
+StructureView octreeStructureView(const Octree& octree);
+
 class OctreeAccelerator final : public Accelerator {
 public:
     explicit OctreeAccelerator(const OctreeOptions& options) : options_(options) {}
