@@ -8,7 +8,7 @@
 #include "grader/engine/batch_grading.h"
 #include "grader/engine/grades_csv.h"
 #include "grader/engine/grading_session.h"
-#include "grader/engine/rubric.h"
+#include "grader/engine/grading_rubric.h"
 #include "grader/engine/submission_grading.h"
 
 #include <cstdio>
@@ -39,10 +39,6 @@ struct MergeFlags {
 };
 
 fs::path executableDir() { return fs::read_symlink("/proc/self/exe").parent_path(); }
-
-std::string rubricPath(const grader::GradingOptions& g) {
-    return g.rubricPath.empty() ? g.sourceDir + "/grader/rubric.json" : g.rubricPath;
-}
 
 // --fail-under P: a CI job fails when the score is below P % of the maximum.
 void checkFailUnder(const grader::GradingReport& report, double percent) {
@@ -81,7 +77,7 @@ void gradeFolderOfSubmissions(const GradeFlags& flags) {
     batch.reportsDir = flags.reports.empty() ? (fs::path(csv).parent_path() / (fs::path(csv).stem().string() + "-reports")).string()
                                              : flags.reports;
     batch.workDir = g.workDir;
-    batch.rubricPath = rubricPath(g);
+    batch.rubric = grader::loadGradingRubric(g.sourceDir, g.rubricPath);
     batch.executable = fs::read_symlink("/proc/self/exe").string();
     batch.gradeArguments = childGradeArguments(g);
     batch.jobs = flags.jobs;
@@ -97,8 +93,7 @@ void gradeFolderOfSubmissions(const GradeFlags& flags) {
 void merge(const MergeFlags& flags) {
     std::vector<std::string> reports = grader::reportsInFolders(flags.reportFolders);
     if (reports.empty()) throw Error(flags.reportFolders.front() + ": no JSON reports to merge");
-    std::string rubric = flags.rubric.empty() ? std::string(RTLAB_REPOSITORY_DIR) + "/grader/rubric.json" : flags.rubric;
-    grader::writeGradesCsv(reports, flags.csv, grader::Rubric::load(rubric).precision());
+    grader::writeGradesCsv(reports, flags.csv, grader::loadGradingRubric(RTLAB_REPOSITORY_DIR, flags.rubric).precision());
     std::cout << "merged " << reports.size() << " reports into " << flags.csv << "\n";
 }
 

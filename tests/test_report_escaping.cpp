@@ -5,7 +5,7 @@
 // UTF-8 with the submission's hostile folder name escaped) and no score changes.
 #include "grader/engine/grades_csv.h"
 #include "grader/engine/grading_report.h"
-#include "grader/engine/rubric.h"
+#include "grader/engine/grading_rubric.h"
 #include "framework/core/untrusted_text.h"
 
 #include <doctest/doctest.h>
@@ -108,7 +108,7 @@ TEST_CASE("every report writer: hostile bytes are escaped, outputs stay valid, s
     const fs::path source = RTLAB_SOURCE_DIR;
     const fs::path work = fs::temp_directory_path() / ("rtlab-escaping-" + std::to_string(::getpid()));
     fs::create_directories(work);
-    Rubric rubric = Rubric::load((source / "grader/rubric.json").string());
+    Rubric rubric = loadGradingRubric(source.string(), "");
     for (const HostileBytes& hostile : hostileClasses()) {
         CAPTURE(hostile.name);
         GradingReport report = hostileReport(hostile, rubric);

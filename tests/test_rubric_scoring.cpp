@@ -2,7 +2,7 @@
 // and only the tests the grader defines earn points.
 #include "framework/core/error.h"
 #include "grader/engine/grading_report.h"
-#include "grader/engine/rubric.h"
+#include "grader/engine/grading_rubric.h"
 
 #include <doctest/doctest.h>
 
@@ -36,11 +36,10 @@ TestResult result(const std::string& name, TestStatus status, double fraction) {
 
 TEST_CASE("rubric: scores are rounded to its precision") {
     fs::path one = writeRubric("one", R"({"precision": 1, "rules": [{"match": "*", "points": 10}]})");
-    fs::path shipped = fs::path(RTLAB_SOURCE_DIR) / "grader/rubric.json";
     std::vector<TestResult> results = {result("a0/x", TestStatus::Failed, 2.0 / 3.0)};
     Rubric::load(one.string()).apply(results);
     CHECK(results[0].score == 6.7);
-    Rubric rubric = Rubric::load(shipped.string());
+    Rubric rubric = loadGradingRubric(RTLAB_SOURCE_DIR, "");
     CHECK(rubric.precision() == 2);
     rubric.apply(results);
     CHECK(results[0].maxScore == 1.0);  // the shipped rubric's catch-all

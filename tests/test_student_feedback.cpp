@@ -11,7 +11,7 @@
 #include "framework/render/image_io.h"
 #include "framework/scene/gltf_loader.h"
 #include "grader/engine/grading_report.h"
-#include "grader/engine/rubric.h"
+#include "grader/engine/grading_rubric.h"
 #include "tests/cli_runner.h"
 #include "tests/output_dirs.h"
 
@@ -49,7 +49,7 @@ size_t count(const std::string& text, const std::string& what) {
     return n;
 }
 
-Rubric shippedRubric() { return Rubric::load(std::string(RTLAB_SOURCE_DIR) + "/grader/rubric.json"); }
+Rubric shippedRubric() { return loadGradingRubric(RTLAB_SOURCE_DIR, ""); }
 
 TestResult result(const std::string& name, TestStatus status, const std::string& reason, std::vector<std::string> details = {}) {
     TestResult t;

@@ -14,8 +14,9 @@ struct Assignment {
     std::string id;     // "a3": the prefix of its test names and rubric rules
     std::string title;  // "uniform grid and 3D-DDA"
     std::vector<TestGroup> (*groups)(GradingContext& context);
-    // The folders of assignments/ its tests call: its own and those it builds on (every
-    // structure's traversal calls a0's intersections).
+    // The folders of assignments/ its tests call: those it builds on (every structure's
+    // traversal calls a0's intersections), then its own, last, which is also the name of its
+    // folder in grader/ (its tests, worker tasks and rubric part).
     std::vector<std::string> folders;
 };
 

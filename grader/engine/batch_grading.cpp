@@ -210,20 +210,19 @@ BatchSummary gradeBatch(const BatchOptions& options) {
     }
     fs::create_directories(options.reportsDir);
     if (!todo.empty()) {
-        Rubric rubric = Rubric::load(options.rubricPath);
         std::vector<TestResult> defined = definedTests(options);
         std::mutex printing;
         forEachInParallel(todo.size(), options.jobs, [&](size_t i) {
             std::string name = fs::path(todo[i]).filename().string();
             ChildOutcome child = gradeFolder(options, todo[i]);
-            GradingReport row = submissionRow(todo[i], child, defined, rubric);
+            GradingReport row = submissionRow(todo[i], child, defined, options.rubric);
             writeReportAtomically(row, reportPath(options, todo[i]));
             std::lock_guard lock(printing);
             ++(child.graded ? summary.graded : summary.notGraded);
             std::cerr << progressLine(name, row, child) << "\n";
         });
     }
-    if (!options.csvPath.empty()) writeGradesCsv(summary.reportPaths, options.csvPath, Rubric::load(options.rubricPath).precision());
+    if (!options.csvPath.empty()) writeGradesCsv(summary.reportPaths, options.csvPath, options.rubric.precision());
     return summary;
 }
 

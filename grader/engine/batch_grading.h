@@ -6,6 +6,8 @@
 // (GNU parallel, a Slurm job array) can fan the work out and `rtlab grade merge` join it.
 #pragma once
 
+#include "grader/engine/rubric.h"
+
 #include <string>
 #include <vector>
 
@@ -24,7 +26,7 @@ struct BatchOptions {
     std::string reportsDir;     // <reportsDir>/<folder name>.json
     std::string csvPath;        // empty: no CSV (a shard of a fan-out)
     std::string workDir;        // a folder per submission below it
-    std::string rubricPath;     // applied to every row
+    Rubric rubric;              // applied to every row; its precision rounds the CSV
     std::string executable;     // the grader to run as the child (this executable)
     // Passed to every child after `grade --submission DIR`: seed, limits, root, models, ...
     std::vector<std::string> gradeArguments;

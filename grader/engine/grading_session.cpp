@@ -2,7 +2,7 @@
 
 #include "framework/core/error.h"
 #include "grader/engine/assignment_registry.h"
-#include "grader/engine/rubric.h"
+#include "grader/engine/grading_rubric.h"
 
 #include <algorithm>
 #include <chrono>
@@ -101,7 +101,7 @@ void scoreDefinedTests(const TestGroup& group, const SandboxRun& run, const std:
 
 }  // namespace
 
-GradingReport gradeWorker(const GradingOptions& options) {
+GradingReport gradeWorker(const GradingOptions& options, std::vector<TestResult> leading) {
     auto start = std::chrono::steady_clock::now();
     GradingContext context;
     context.seed = options.seed;
@@ -111,7 +111,7 @@ GradingReport gradeWorker(const GradingOptions& options) {
     context.structureKey = (uint64_t(std::random_device{}()) << 32) ^ std::random_device{}();
     std::string referenceDir = options.sourceDir + "/grader/reference";
     context.reference = options.writeReference ? ReferenceData::forWriting(referenceDir) : ReferenceData::load(referenceDir);
-    Rubric rubric = Rubric::load(options.rubricPath.empty() ? options.sourceDir + "/grader/rubric.json" : options.rubricPath);
+    Rubric rubric = loadGradingRubric(options.sourceDir, options.rubricPath);
 
     auto wanted = [&](const std::string& a) {
         return options.assignments.empty() || std::find(options.assignments.begin(), options.assignments.end(), a) != options.assignments.end();
@@ -154,6 +154,7 @@ GradingReport gradeWorker(const GradingOptions& options) {
     if (!options.tests.empty())
         std::erase_if(report.tests, [&](const TestResult& r) { return !matchesAny(options.tests, r.name); });
     mergeSameNamed(report.tests);
+    report.tests.insert(report.tests.begin(), leading.begin(), leading.end());
     rubric.apply(report.tests);
     if (options.writeReference) context.reference.save();
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -18,7 +18,7 @@ struct GradingOptions {
     std::string sourceDir;   // repository root (scenes/, grader/rubric.json, grader/reference/)
     std::string modelsDir;   // bunny.gltf
     std::string workDir;     // renders and heat maps
-    std::string rubricPath;  // default sourceDir/grader/rubric.json
+    std::string rubricPath;  // empty: grader/rubric.json with every assignment's part (grading_rubric.h)
     std::vector<std::string> assignments;  // empty: every registered one (assignment_registry.h)
     std::vector<std::string> tests;        // glob patterns of test names (rubric.h's globMatches); empty: all
     std::string workerPath;  // the worker executable holding the code to grade (grader/worker/)
@@ -30,7 +30,9 @@ struct GradingOptions {
     std::string implementation;   // what is graded, for the reports
 };
 
-GradingReport gradeWorker(const GradingOptions& options);
+// `leading` are tests graded before this run (a submission's build), reported first; the
+// rubric is loaded and applied once, to them and to every test of the run.
+GradingReport gradeWorker(const GradingOptions& options, std::vector<TestResult> leading = {});
 
 // Merges results that share a name (one per scene) into one test: passed when all passed,
 // not started when any part is, otherwise failed with the first failure's reason; the

@@ -41,12 +41,22 @@ std::string asJsonString(const std::string& text) {
 
 }  // namespace
 
-Rubric Rubric::load(const std::string& path) {
+namespace {
+
+nlohmann::json readRubricFile(const std::string& path) {
     std::ifstream in(path);
     if (!in) throw Error(path + ": cannot read the rubric");
-    Rubric rubric;
     try {
-        auto json = nlohmann::json::parse(in);
+        return nlohmann::json::parse(in);
+    } catch (const nlohmann::json::exception& e) {
+        throw Error(path + ": malformed rubric (" + e.what() + ")");
+    }
+}
+
+}  // namespace
+
+void Rubric::readRules(const std::string& path, const nlohmann::json& json) {
+    try {
         for (const auto& rule : json.at("rules")) {
             RubricRule r{rule.at("match").get<std::string>(), rule.at("points").get<double>(), rule.value("visibility", "visible")};
             if (r.visibility != "visible" && r.visibility != "hidden" && r.visibility != "after_due_date" &&
@@ -54,19 +64,26 @@ Rubric Rubric::load(const std::string& path) {
                 throw Error(path + ": rule " + asJsonString(r.pattern) + " has visibility " + asJsonString(r.visibility) +
                             " (valid: visible, hidden, after_due_date, after_published)");
             if (!(r.points >= 0)) throw Error(path + ": rule " + asJsonString(r.pattern) + " has negative points");
-            rubric.rules_.push_back(r);
+            rules_.push_back(r);
         }
         for (const auto& guide : json.value("guides", nlohmann::json::array()))
-            rubric.guides_.push_back({guide.at("match").get<std::string>(), guide.value("stub", ""), guide.value("docs", "")});
-        if (json.contains("precision")) {
-            const auto& precision = json.at("precision");
-            // Compared as a 64-bit number: get<int>() would read 4294967298 as 2.
-            if (!precision.is_number_integer() || precision.get<int64_t>() < 0 || precision.get<int64_t>() > 6)
-                throw Error(path + ": \"precision\" must be a whole number of decimals from 0 to 6");
-            rubric.precision_ = static_cast<int>(precision.get<int64_t>());
-        }
+            guides_.push_back({guide.at("match").get<std::string>(), guide.value("stub", ""), guide.value("docs", "")});
     } catch (const nlohmann::json::exception& e) {
         throw Error(path + ": malformed rubric (" + e.what() + ")");
+    }
+}
+
+Rubric Rubric::load(const std::string& path, const std::vector<std::string>& parts) {
+    Rubric rubric;
+    for (const std::string& part : parts) rubric.readRules(part, readRubricFile(part));
+    nlohmann::json json = readRubricFile(path);
+    rubric.readRules(path, json);
+    if (json.contains("precision")) {
+        const auto& precision = json.at("precision");
+        // Compared as a 64-bit number: get<int>() would read 4294967298 as 2.
+        if (!precision.is_number_integer() || precision.get<int64_t>() < 0 || precision.get<int64_t>() > 6)
+            throw Error(path + ": \"precision\" must be a whole number of decimals from 0 to 6");
+        rubric.precision_ = static_cast<int>(precision.get<int64_t>());
     }
     return rubric;
 }

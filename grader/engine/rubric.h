@@ -5,6 +5,8 @@
 
 #include "grader/engine/test_result.h"
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <string>
 #include <vector>
 
@@ -26,8 +28,10 @@ struct RubricGuide {
 
 class Rubric {
 public:
-    // Throws rtlab::Error naming the file and the problem for a malformed rubric.
-    static Rubric load(const std::string& path);
+    // Throws rtlab::Error naming the file and the problem for a malformed rubric. The rules and
+    // guides of each part (an assignment's grader/<folder>/rubric.json) are read first, in
+    // order, then the file's; the precision is the file's.
+    static Rubric load(const std::string& path, const std::vector<std::string>& parts = {});
 
     // Sets maxScore, score (fraction x points, rounded to precision()) and visibility of every
     // result, and its stub and docs from the first guide that matches. A test no rule matches
@@ -46,6 +50,8 @@ public:
     double round(double points) const;
 
 private:
+    void readRules(const std::string& path, const nlohmann::json& json);
+
     std::vector<RubricRule> rules_;
     std::vector<RubricGuide> guides_;
     int precision_ = 2;

@@ -3,7 +3,6 @@
 #include "framework/core/error.h"
 #include "grader/engine/assignment_registry.h"
 #include "grader/engine/compile_sandbox.h"
-#include "grader/engine/rubric.h"
 #include "grader/engine/submission_build.h"
 
 #include <algorithm>
@@ -74,11 +73,9 @@ GradingReport gradeSubmission(const std::string& submissionDir, const Submission
     }
     for (const std::string& line : splitLines(build.log, 60)) buildTest.details.push_back(line);
 
-    GradingReport report = gradeWorker(g);
+    GradingReport report = gradeWorker(g, {buildTest});
     // The compile sandbox a submission is built in, also when it could not be read.
     report.isolation += "; " + CompileSandbox::detect().description();
-    report.tests.insert(report.tests.begin(), buildTest);
-    Rubric::load(g.rubricPath.empty() ? g.sourceDir + "/grader/rubric.json" : g.rubricPath).apply(report.tests);
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report;
 }
