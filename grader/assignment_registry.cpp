@@ -13,13 +13,13 @@ namespace rtlab::grader {
 
 const std::vector<Assignment>& assignments() {
     static const std::vector<Assignment> list{
-        {"a0", "ray-box, ray-triangle and ray-sphere tests", a0Groups, {"a0_intersect"}},
-        {"a1", "BVH with median, middle and equal-counts splits", a1Groups, {"a0_intersect", "a1_bvh"}},
-        {"a2", "SAH: full sweep and buckets", a2Groups, {"a0_intersect", "a1_bvh", "a2_sah"}},
-        {"a3", "uniform grid and 3D-DDA", a3Groups, {"a0_intersect", "a3_grid"}},
-        {"a4", "octree: exact insertion and the parametric walk", a4Groups, {"a0_intersect", "a4_octree"}},
-        {"a5", "KD-tree: the SAH with events, the leaf rule, front-to-back traversal", a5Groups, {"a0_intersect", "a5_kdtree"}},
-        {"a6", "radiometry and Monte Carlo direct lighting", a6Groups, {"a6_radiometry"}},
+        {"a0", "ray-box, ray-triangle and ray-sphere tests", a0Groups, a0Stubs, {"a0_intersect"}},
+        {"a1", "BVH with median, middle and equal-counts splits", a1Groups, a1Stubs, {"a0_intersect", "a1_bvh"}},
+        {"a2", "SAH: full sweep and buckets", a2Groups, a2Stubs, {"a0_intersect", "a1_bvh", "a2_sah"}},
+        {"a3", "uniform grid and 3D-DDA", a3Groups, a3Stubs, {"a0_intersect", "a3_grid"}},
+        {"a4", "octree: exact insertion and the parametric walk", a4Groups, a4Stubs, {"a0_intersect", "a4_octree"}},
+        {"a5", "KD-tree: the SAH with events, the leaf rule, front-to-back traversal", a5Groups, a5Stubs, {"a0_intersect", "a5_kdtree"}},
+        {"a6", "radiometry and Monte Carlo direct lighting", a6Groups, a6Stubs, {"a6_radiometry"}},
     };
     return list;
 }

@@ -16,9 +16,9 @@ namespace rtlab::grader {
 namespace {
 
 // The stubs named in verdicts ("crashed with SIGSEGV in <stub>").
-constexpr const char* kStubBox = "a0 intersectBox (assignments/a0_intersect/ray_box.cpp)";
-constexpr const char* kStubTriangle = "a0 intersectTriangle (assignments/a0_intersect/ray_triangle.cpp)";
-constexpr const char* kStubSphere = "a0 intersectSphere (assignments/a0_intersect/ray_sphere.cpp)";
+const std::string kStubBox = a0Stubs().name("intersectBox");
+const std::string kStubTriangle = a0Stubs().name("intersectTriangle");
+const std::string kStubSphere = a0Stubs().name("intersectSphere");
 
 constexpr const char* kA0 = "a0";
 
@@ -63,7 +63,7 @@ void recordRayCase(CaseTally& tally, const std::string& id, const std::string& s
 
 // A phase that runs `task` on every query: the box, triangle and sphere tables share it.
 template <typename Query>
-ChildPhase queriesPhase(const char* stub, const char* task, const std::vector<Query>& queries) {
+ChildPhase queriesPhase(const std::string& stub, const char* task, const std::vector<Query>& queries) {
     ByteWriter input;
     input.putVector(queries);
     return makePhase(stub, task, std::move(input));

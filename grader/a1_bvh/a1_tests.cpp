@@ -16,9 +16,9 @@ std::vector<TestGroup> a1Groups(GradingContext& context) {
             if (c.function == f) chosen.push_back(c);
         return chosen;
     };
-    groups.push_back(splitCaseGroup("a1", "a1/splits/median", only(SplitFunction::Median)));
-    groups.push_back(splitCaseGroup("a1", "a1/splits/middle", only(SplitFunction::Middle)));
-    groups.push_back(splitCaseGroup("a1", "a1/splits/equal-counts", only(SplitFunction::EqualCounts)));
+    groups.push_back(splitCaseGroup(a1Stubs(), "a1/splits/median", only(SplitFunction::Median)));
+    groups.push_back(splitCaseGroup(a1Stubs(), "a1/splits/middle", only(SplitFunction::Middle)));
+    groups.push_back(splitCaseGroup(a1Stubs(), "a1/splits/equal-counts", only(SplitFunction::EqualCounts)));
 
     struct Method {
         const char* label;
@@ -31,7 +31,7 @@ std::vector<TestGroup> a1Groups(GradingContext& context) {
         config.assignment = "a1";
         config.label = m.label;
         config.options.method = m.method;
-        config.buildStub = std::string("a1 buildBvh (assignments/a1_bvh/bvh_build.cpp) with a1 ") + m.function;
+        config.buildStub = a1Stubs().name("buildBvh") + " with " + a1Stubs().function(m.function);
         config.exactSah = true;
         config.recursive = true;
         config.visitOrder = m.method == SplitMethod::Median;  // once: the traversal is the same for every build

@@ -1,5 +1,6 @@
 #include "grader/a1_bvh/bvh_tests.h"
 
+#include "grader/a1_bvh/a1_tests.h"
 #include "grader/a1_bvh/bvh_structure.h"
 #include "grader/a1_bvh/visit_order.h"
 #include "grader/a1_bvh/given_bvh.h"
@@ -10,9 +11,9 @@
 namespace rtlab::grader {
 namespace {
 
-constexpr const char* kStubOrdered = "a1 intersectBvh (assignments/a1_bvh/bvh_traverse.cpp)";
-constexpr const char* kStubRecursive = "a1 intersectBvhRecursive (assignments/a1_bvh/bvh_traverse.cpp)";
-constexpr const char* kStubOccluded = "a1 occludedBvh (assignments/a1_bvh/bvh_traverse.cpp)";
+const std::string kStubOrdered = a1Stubs().name("intersectBvh");
+const std::string kStubRecursive = a1Stubs().name("intersectBvhRecursive");
+const std::string kStubOccluded = a1Stubs().name("occludedBvh");
 
 std::optional<Bvh> readBvh(const PhaseOutcome& outcome, size_t primCount, std::string* problem) {
     try {

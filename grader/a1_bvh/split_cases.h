@@ -8,6 +8,7 @@
 #include "grader/a1_bvh/wire/bvh_inputs.h"
 
 #include "framework/interface/bvh.h"
+#include "grader/engine/stub_table.h"
 #include "grader/engine/test_group.h"
 
 #include <string>
@@ -27,10 +28,15 @@ struct SplitCase {
     std::string derivation;       // the hand calculation, shown when the case fails
 };
 
-std::vector<SplitCase> a1SplitCases();
-std::vector<SplitCase> a2SplitCases();
+// The shorthands cases are written in: a box, a cube of side s at (x, y, z), split options.
+inline Bounds3f caseBox(Vec3 lo, Vec3 hi) { return Bounds3f(lo, hi); }
+inline Bounds3f cube(float x, float y, float z, float s) { return caseBox({x, y, z}, {x + s, y + s, z + s}); }
+BvhOptions splitOptions(int maxLeaf, int buckets = 12, bool allAxes = false);
 
-// One group: a phase per function the cases use, and a test named testName.
-TestGroup splitCaseGroup(const std::string& assignment, const std::string& testName, std::vector<SplitCase> cases);
+std::vector<SplitCase> a1SplitCases();
+
+// One group of the assignment whose stubs are `stubs`: the functions its cases call (named from
+// the table), and a test named testName.
+TestGroup splitCaseGroup(const StubTable& stubs, const std::string& testName, std::vector<SplitCase> cases);
 
 }  // namespace rtlab::grader

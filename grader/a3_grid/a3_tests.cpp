@@ -20,15 +20,15 @@ namespace rtlab::grader {
 namespace {
 
 constexpr const char* kA3 = "a3";
-constexpr const char* kStubResolution = "a3 gridResolution (assignments/a3_grid/grid_build.cpp)";
-constexpr const char* kStubCell = "a3 cellOfPoint (assignments/a3_grid/grid_build.cpp)";
-constexpr const char* kStubRange = "a3 cellRange (assignments/a3_grid/grid_build.cpp)";
-constexpr const char* kStubFill = "a3 fillGridCells (assignments/a3_grid/grid_build.cpp)";
-constexpr const char* kStubSetup = "a3 ddaSetup (assignments/a3_grid/grid_dda.cpp)";
-constexpr const char* kStubStep = "a3 ddaStep (assignments/a3_grid/grid_dda.cpp)";
-constexpr const char* kStubWalk = "a3 ddaSetup and ddaStep (assignments/a3_grid/grid_dda.cpp)";
-constexpr const char* kStubClosest = "a3 intersectGrid (assignments/a3_grid/grid_traverse.cpp)";
-constexpr const char* kStubOccluded = "a3 occludedGrid (assignments/a3_grid/grid_traverse.cpp)";
+const std::string kStubResolution = a3Stubs().name("gridResolution");
+const std::string kStubCell = a3Stubs().name("cellOfPoint");
+const std::string kStubRange = a3Stubs().name("cellRange");
+const std::string kStubFill = a3Stubs().name("fillGridCells");
+const std::string kStubSetup = a3Stubs().name("ddaSetup");
+const std::string kStubStep = a3Stubs().name("ddaStep");
+const std::string kStubWalk = a3Stubs().names({"ddaSetup", "ddaStep"});
+const std::string kStubClosest = a3Stubs().name("intersectGrid");
+const std::string kStubOccluded = a3Stubs().name("occludedGrid");
 
 using worker::GridFrame;
 

@@ -26,18 +26,18 @@ namespace rtlab::grader {
 namespace {
 
 constexpr const char* kA4 = "a4";
-constexpr const char* kStubRootBox = "a4 octreeRootBox (assignments/a4_octree/octree_build.cpp)";
-constexpr const char* kStubChildBox = "a4 childBox (assignments/a4_octree/octree_build.cpp)";
-constexpr const char* kStubChildIndex = "a4 childIndex (assignments/a4_octree/octree_build.cpp)";
-constexpr const char* kStubBuild = "a4 buildOctree (assignments/a4_octree/octree_build.cpp)";
-constexpr const char* kStubOverlap = "a4 triangleOverlapsBox (assignments/a4_octree/triangle_box.cpp)";
-constexpr const char* kStubMirror = "a4 mirrorRay (assignments/a4_octree/octree_walk.cpp)";
-constexpr const char* kStubRootSpan = "a4 rootSpan (assignments/a4_octree/octree_walk.cpp)";
-constexpr const char* kStubMid = "a4 midParameters (assignments/a4_octree/octree_walk.cpp)";
-constexpr const char* kStubFirst = "a4 firstNode (assignments/a4_octree/octree_walk.cpp)";
-constexpr const char* kStubNext = "a4 nextNode (assignments/a4_octree/octree_walk.cpp)";
-constexpr const char* kStubClosest = "a4 intersectOctree (assignments/a4_octree/octree_traverse.cpp)";
-constexpr const char* kStubOccluded = "a4 occludedOctree (assignments/a4_octree/octree_traverse.cpp)";
+const std::string kStubRootBox = a4Stubs().name("octreeRootBox");
+const std::string kStubChildBox = a4Stubs().name("childBox");
+const std::string kStubChildIndex = a4Stubs().name("childIndex");
+const std::string kStubBuild = a4Stubs().name("buildOctree");
+const std::string kStubOverlap = a4Stubs().name("triangleOverlapsBox");
+const std::string kStubMirror = a4Stubs().name("mirrorRay");
+const std::string kStubRootSpan = a4Stubs().name("rootSpan");
+const std::string kStubMid = a4Stubs().name("midParameters");
+const std::string kStubFirst = a4Stubs().name("firstNode");
+const std::string kStubNext = a4Stubs().name("nextNode");
+const std::string kStubClosest = a4Stubs().name("intersectOctree");
+const std::string kStubOccluded = a4Stubs().name("occludedOctree");
 
 constexpr float kInf = kInfinity;
 const float kNaN = std::numeric_limits<float>::quiet_NaN();
@@ -80,7 +80,7 @@ struct TableCase {
 // A truth-table group of one phase: every case's `call` on the wire (after `input`, what the
 // calls share), each answer read back and judged against the case's `expected`.
 template <typename Call, typename Answer, typename Read, typename Describe>
-TestGroup truthTable(const char* title, const char* test, const char* stub, const char* task, std::vector<TableCase<Call, Answer>> list,
+TestGroup truthTable(const char* title, const char* test, const std::string& stub, const char* task, std::vector<TableCase<Call, Answer>> list,
                      ByteWriter input, Read read, Describe describe) {
     using Case = TableCase<Call, Answer>;
     auto cases = std::make_shared<std::vector<Case>>(std::move(list));

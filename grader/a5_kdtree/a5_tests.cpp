@@ -22,21 +22,21 @@ namespace rtlab::grader {
 namespace {
 
 constexpr const char* kA5 = "a5";
-constexpr const char* kStubSah = "a5 kdSahCost (assignments/a5_kdtree/kd_sah.cpp)";
-constexpr const char* kStubEventOrder = "a5 kdEventBefore (assignments/a5_kdtree/kd_events.cpp)";
-constexpr const char* kStubSortedEvents = "a5 kdSortedEvents (assignments/a5_kdtree/kd_events.cpp)";
-constexpr const char* kStubBestSplit = "a5 kdBestSplit (assignments/a5_kdtree/kd_split.cpp)";
-constexpr const char* kStubClassify = "a5 kdClassify (assignments/a5_kdtree/kd_split.cpp)";
-constexpr const char* kStubMaxDepth = "a5 kdMaxDepth (assignments/a5_kdtree/kd_leaf.cpp)";
-constexpr const char* kStubDecide = "a5 kdDecideNode (assignments/a5_kdtree/kd_leaf.cpp)";
-constexpr const char* kStubChildOrder = "a5 kdChildOrder (assignments/a5_kdtree/kd_traverse.cpp)";
-constexpr const char* kStubClosest = "a5 intersectKdTree (assignments/a5_kdtree/kd_traverse.cpp)";
-constexpr const char* kStubOccluded = "a5 occludedKdTree (assignments/a5_kdtree/kd_traverse.cpp)";
-constexpr const char* kStubBuild = "a5 buildKdTree (assignments/a5_kdtree/kd_build.cpp) with the a5 functions it calls";
-constexpr const char* kStubBuildNlogN = "a5 buildKdTreeNlogN (assignments/a5_kdtree/kd_build_nlogn.cpp)";
-constexpr const char* kStubBsp = "a5 buildBspAutopartition (assignments/a5_kdtree/bsp_autopartition.cpp)";
-constexpr const char* kStubBspClosest = "a5 intersectBsp (assignments/a5_kdtree/bsp_autopartition.cpp)";
-constexpr const char* kStubBspOccluded = "a5 occludedBsp (assignments/a5_kdtree/bsp_autopartition.cpp)";
+const std::string kStubSah = a5Stubs().name("kdSahCost");
+const std::string kStubEventOrder = a5Stubs().name("kdEventBefore");
+const std::string kStubSortedEvents = a5Stubs().name("kdSortedEvents");
+const std::string kStubBestSplit = a5Stubs().name("kdBestSplit");
+const std::string kStubClassify = a5Stubs().name("kdClassify");
+const std::string kStubMaxDepth = a5Stubs().name("kdMaxDepth");
+const std::string kStubDecide = a5Stubs().name("kdDecideNode");
+const std::string kStubChildOrder = a5Stubs().name("kdChildOrder");
+const std::string kStubClosest = a5Stubs().name("intersectKdTree");
+const std::string kStubOccluded = a5Stubs().name("occludedKdTree");
+const std::string kStubBuild = a5Stubs().name("buildKdTree") + " with the a5 functions it calls";
+const std::string kStubBuildNlogN = a5Stubs().name("buildKdTreeNlogN");
+const std::string kStubBsp = a5Stubs().name("buildBspAutopartition");
+const std::string kStubBspClosest = a5Stubs().name("intersectBsp");
+const std::string kStubBspOccluded = a5Stubs().name("occludedBsp");
 
 const char* const kAxes[] = {"x", "y", "z"};
 const char* const kSides[] = {"below", "above", "both"};
@@ -71,7 +71,7 @@ void scoreTable(const SandboxRun& run, size_t phase, const std::vector<Case>& ca
 }
 
 template <typename Call, typename Case, typename MakeCall>
-ChildPhase callsPhase(const char* stub, const char* task, const std::vector<Case>& cases, MakeCall&& makeCall) {
+ChildPhase callsPhase(const std::string& stub, const char* task, const std::vector<Case>& cases, MakeCall&& makeCall) {
     std::vector<Call> calls;
     for (const Case& c : cases) calls.push_back(makeCall(c));
     ByteWriter input;
@@ -343,7 +343,7 @@ std::optional<KdTree> readTree(const PhaseOutcome& outcome, size_t primCount, st
 
 // A build phase: the scene, then what writeOptions adds.
 template <typename WriteOptions>
-std::function<ChildPhase(const Scene&)> buildPhase(const char* stub, const char* task, WriteOptions writeOptions) {
+std::function<ChildPhase(const Scene&)> buildPhase(const std::string& stub, const char* task, WriteOptions writeOptions) {
     return [=](const Scene& scene) {
         ByteWriter input;
         writeScene(scene, input);
@@ -353,7 +353,7 @@ std::function<ChildPhase(const Scene&)> buildPhase(const char* stub, const char*
 }
 
 // The KD-tree as the generic structure tests see it, with pbrt-v3's defaults.
-StructurePlugin kdPlugin(const std::string& label, worker::KdBuildFunction function, const char* stub) {
+StructurePlugin kdPlugin(const std::string& label, worker::KdBuildFunction function, const std::string& stub) {
     const KdTreeOptions options;
     StructurePlugin plugin;
     plugin.assignment = kA5;

@@ -26,12 +26,12 @@ using worker::Estimator;
 using worker::Sampler;
 
 constexpr const char* kA6 = "a6";
-constexpr const char* kStubUnits = "a6 units (assignments/a6_radiometry/units.cpp)";
-constexpr const char* kStubSolidAngles = "a6 solid angles (assignments/a6_radiometry/solid_angle.cpp)";
-constexpr const char* kStubSamplers = "a6 samplers (assignments/a6_radiometry/samplers.cpp)";
-constexpr const char* kStubSphericalTriangle = "a6 sampleSphericalTriangle (assignments/a6_radiometry/spherical_triangle.cpp)";
-constexpr const char* kStubLightEstimators = "a6 light estimators (assignments/a6_radiometry/light_estimators.cpp)";
-constexpr const char* kStubDirectionEstimators = "a6 estimators by direction (assignments/a6_radiometry/direction_estimators.cpp)";
+const std::string kStubUnits = a6Stubs().file("units.cpp", "units");
+const std::string kStubSolidAngles = a6Stubs().file("solid_angle.cpp", "solid angles");
+const std::string kStubSamplers = a6Stubs().file("samplers.cpp", "samplers");
+const std::string kStubSphericalTriangle = a6Stubs().name("sampleSphericalTriangle");
+const std::string kStubLightEstimators = a6Stubs().file("light_estimators.cpp", "light estimators");
+const std::string kStubDirectionEstimators = a6Stubs().file("direction_estimators.cpp", "estimators by direction");
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kAlpha = 0.01;
@@ -60,7 +60,7 @@ struct ValueCase {
 
 // One phase per table: the worker writes one f64 (or f32) per call, in order.
 template <typename Call, typename Value = double>
-TestGroup tableGroup(const char* title, const char* test, const char* stub, const char* task,
+TestGroup tableGroup(const char* title, const char* test, const std::string& stub, const char* task,
                      std::vector<std::pair<Call, ValueCase>> table, double tolerance = kTableTolerance) {
     std::vector<Call> calls;
     auto cases = std::make_shared<std::vector<ValueCase>>();
@@ -398,7 +398,7 @@ TestGroup samplerGroup(std::shared_ptr<const SamplerTarget> t) {
 
 // --- Estimators: z tests and the mistakes they match -----------------------------------------
 
-ChildPhase estimatorPhase(const char* stub, const std::vector<EstimatorCase>& cases) {
+ChildPhase estimatorPhase(const std::string& stub, const std::vector<EstimatorCase>& cases) {
     ByteWriter input;
     input.put<uint64_t>(cases.size());
     for (const EstimatorCase& c : cases) {
@@ -458,7 +458,7 @@ std::string judgeCase(const EstimatorCase& c, const std::vector<Vec3>& samples, 
     return "";
 }
 
-TestGroup estimatorGroup(std::string test, const char* stub, std::shared_ptr<const std::vector<EstimatorCase>> cases) {
+TestGroup estimatorGroup(std::string test, const std::string& stub, std::shared_ptr<const std::vector<EstimatorCase>> cases) {
     TestGroup group{kA6, test, {estimatorPhase(stub, *cases)}, {}};
     group.score = [test, cases](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult result = makeResult(kA6, test);
@@ -529,7 +529,7 @@ std::vector<TestGroup> a6Groups(GradingContext&) {
     groups.push_back(samplerGroup(std::make_shared<SamplerTarget>(triangleTarget())));
     groups.push_back(samplerGroup(std::make_shared<SamplerTarget>(sphericalTriangleTarget())));
     groups.push_back(pdfConversionGroup());
-    auto add = [&](std::string test, const char* stub, std::vector<EstimatorCase> cases) {
+    auto add = [&](std::string test, const std::string& stub, std::vector<EstimatorCase> cases) {
         groups.push_back(estimatorGroup(std::move(test), stub, std::make_shared<const std::vector<EstimatorCase>>(std::move(cases))));
     };
     add("a6/estimators/point-light", kStubLightEstimators, pointLightCases());

@@ -3,6 +3,7 @@
 // line in grader/assignment_registry.cpp.
 #pragma once
 
+#include "grader/engine/stub_table.h"
 #include "grader/engine/test_group.h"
 
 #include <string>
@@ -14,6 +15,7 @@ struct Assignment {
     std::string id;     // "a3": the prefix of its test names and rubric rules
     std::string title;  // "uniform grid and 3D-DDA"
     std::vector<TestGroup> (*groups)(GradingContext& context);
+    const StubTable& (*stubs)();  // its student files' stubs, as they name themselves
     // The folders of assignments/ its tests call: those it builds on (every structure's
     // traversal calls a0's intersections), then its own, last, which is also the name of its
     // folder in grader/ (its tests, worker tasks and rubric part).

@@ -1,11 +1,13 @@
-// The traversal graded on a structure the grader built (docs/grading.md#the-traversal-follows-
-// its-structure). A traversal that walks a private structure (a BVH made during the build, say)
-// answers for the scene whatever its cells or leaves hold, so checking the student's structure
-// and the traversal's hits apart proves nothing. Here the grader builds a structure of its own,
-// leaves some primitives out of some of its leaves, hands it to the student's traversal, and
-// asks that every answer follow that structure, not the scene:
-//  * a hit must be on a primitive some leaf along the ray lists (within rounding of the leaf's
-//    box): a primitive the structure does not hold there cannot be found by walking it;
+// The traversal graded on a structure the grader built
+// (docs/grading.md#the-traversal-follows-its-structure). A traversal that walks a private
+// structure (a BVH made during the build, say) answers for the scene whatever its cells or
+// leaves hold, so checking the student's structure and the traversal's hits apart proves
+// nothing. Here the grader builds a structure of its own, leaves some primitives out of some of
+// its leaves, hands it to the student's traversal, and asks that every answer follow that
+// structure, not the scene:
+//  * a hit must be on a primitive some leaf lists: walking the structure cannot find one it
+//    does not hold (any leaf, since a traversal that also opens leaves the ray misses only
+//    wastes time);
 //  * no hit may lie beyond a robust hit of a primitive listed in a leaf that contains that hit
 //    point: walking front to back, that leaf is reached (or a nearer hit ends the walk) before
 //    the traversal may stop.
@@ -56,11 +58,13 @@ public:
 
     // The words every problem that shows a hit on a primitive the structure does not hold
     // starts with: the mark of a traversal that does not walk what it was given.
-    static constexpr const char* kNotInStructure = "not held by any leaf along the ray";
+    static constexpr const char* kNotInStructure = "not held by any leaf of the structure";
 
 private:
-    // Some leaf of prim's box, grown by the slack, meets the ray's segment.
-    bool possiblyListed(uint32_t prim, const Ray& ray) const;
+    // Some leaf lists prim. Not "some leaf along the ray": a traversal that also visits leaves
+    // the ray misses (beyond the tree's far faces, behind the origin) only loses time on the
+    // real structure, and must lose no hits here.
+    bool heldByStructure(uint32_t prim) const;
     // Some leaf of prim's box, shrunk by the slack, contains the point at t.
     bool surelyListed(uint32_t prim, const Ray& ray, double t) const;
 
