@@ -10,8 +10,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 #include <unistd.h>
+#include <vector>
 
 namespace fs = std::filesystem;
 using namespace rtlab::grader;
@@ -30,10 +32,16 @@ void applyPatch(const fs::path& submission, const nlohmann::json& patch) {
     std::ofstream(file) << text;
 }
 
-// The submissions folder the batch grades: each fixture as it is, or laid over a copy of the
+// The assignments a fixture is graded on: its "assignments", a0 and a1 unless it names others.
+std::vector<std::string> gradedAssignments(const nlohmann::json& expected) {
+    return expected.value("assignments", std::vector<std::string>{"a0", "a1"});
+}
+
+// The submissions folder a batch grades: each fixture as it is, or laid over a copy of the
 // reference solutions when it says with_solutions.
-fs::path assembleSubmissions(const nlohmann::json& fixtures, const fs::path& source, const fs::path& into) {
-    for (const auto& [name, expected] : fixtures.items()) {
+fs::path assembleSubmissions(const std::vector<std::string>& names, const nlohmann::json& fixtures, const fs::path& source, const fs::path& into) {
+    for (const std::string& name : names) {
+        const nlohmann::json& expected = fixtures.at(name);
         fs::path target = into / name;
         fs::create_directories(target / "assignments");
         if (expected.value("with_solutions", false))
@@ -56,19 +64,33 @@ TEST_CASE("grader fixtures: every hostile or broken submission gets its verdict 
     auto fixtures = nlohmann::json::parse(std::ifstream(source / "grader/fixtures/expectations.json")).at("fixtures");
     for (const auto& [name, expected] : fixtures.items())
         for (const auto& path : expected.value("not_created", nlohmann::json::array())) fs::remove(path.get<std::string>());
-    fs::path submissions = assembleSubmissions(fixtures, source, work / "submissions");
-
-    // Run from `work`, so relative paths a fixture tries to write would land there.
-    std::string command = "cd '" + work.string() + "' && '" + (binary / "rtlab-solution").string() + "' grade --submissions '" +
-                          submissions.string() + "' --jobs 2 --csv grades.csv --time-limit 1 --memory-limit 256 --compile-time-limit 40" +
-                          " --assignment a0 --assignment a1 --models '" + (binary / "models").string() + "' --work '" +
-                          (work / "grading").string() + "' > batch.log 2>&1";
-    REQUIRE(std::system(command.c_str()) == 0);
-    REQUIRE(fs::exists(work / "grades.csv"));
+    // One batch per list of assignments graded, each in a folder of its own.
+    std::map<std::vector<std::string>, std::vector<std::string>> batches;
+    for (const auto& [name, expected] : fixtures.items()) batches[gradedAssignments(expected)].push_back(name);
+    std::map<std::string, fs::path> reportOf;
+    for (const auto& [assignments, names] : batches) {
+        std::string label, options;
+        for (const std::string& a : assignments) {
+            label += (label.empty() ? "" : "-") + a;
+            options += " --assignment " + a;
+        }
+        fs::path batch = work / label;
+        fs::create_directories(batch);
+        fs::path submissions = assembleSubmissions(names, fixtures, source, batch / "submissions");
+        // Run from the batch's folder, so relative paths a fixture tries to write would land there.
+        std::string command = "cd '" + batch.string() + "' && '" + (binary / "rtlab-solution").string() + "' grade --submissions '" +
+                              submissions.string() + "' --jobs 2 --csv grades.csv --time-limit 1 --memory-limit 256 --compile-time-limit 40" +
+                              options + " --models '" + (binary / "models").string() + "' --work '" + (batch / "grading").string() +
+                              "' > batch.log 2>&1";
+        INFO(label);
+        REQUIRE(std::system(command.c_str()) == 0);
+        REQUIRE(fs::exists(batch / "grades.csv"));
+        for (const std::string& name : names) reportOf[name] = batch / "grades-reports" / (name + ".json");
+    }
 
     for (const auto& [name, expected] : fixtures.items()) {
         CAPTURE(name);
-        GradingReport report = readJsonReport((work / "grades-reports" / (name + ".json")).string());
+        GradingReport report = readJsonReport(reportOf.at(name).string());
         if (expected.contains("score_at_least")) {
             CHECK(report.score() >= expected.at("score_at_least").get<double>());
             if (expected.contains("score_below")) CHECK(report.score() < expected.at("score_below").get<double>());
@@ -91,7 +113,7 @@ TEST_CASE("grader fixtures: every hostile or broken submission gets its verdict 
             CHECK(report.studentOutput.find(expected.at("student_output").get<std::string>()) != std::string::npos);
         for (const auto& path : expected.value("not_created", nlohmann::json::array())) {
             CHECK_FALSE(fs::exists(path.get<std::string>()));
-            CHECK_FALSE(fs::exists(work / path.get<std::string>()));
+            CHECK_FALSE(fs::exists(reportOf.at(name).parent_path().parent_path() / path.get<std::string>()));
         }
     }
     fs::remove_all(work);
