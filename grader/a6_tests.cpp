@@ -458,7 +458,8 @@ std::string judgeMapping(const SamplerTarget& t, const std::vector<worker::Sampl
         for (uint32_t i = 0; i < call.count && next < picked.size(); ++i) {
             Vec2 u = worker::uniformPair(rng);
             if (i != picked[next]) continue;
-            ++next, ++checked;
+            ++next;
+            ++checked;
             DVec3 pinned = pinnedSample(call, u), got(runs[k][i].value);
             double off = glm::length(got - pinned);
             if (off <= pinnedTolerance(call)) continue;
@@ -591,8 +592,9 @@ std::string matchingMistake(const EstimatorCase& c, int channel, const MeanEstim
 }
 
 // One case: the problem, or "". Deterministic estimates (no spread) must equal the closed form
-// within float rounding, and are right only where the estimator has no spread either (a point
-// light, nothing of the light in sight); random ones must pass the z test of their mean at
+// within float rounding (a wrong one is named by the mistake it matches), and are right only
+// where the estimator has no spread either (a point light, nothing of the light in sight);
+// random ones must pass the z test of their mean at
 // `alpha`, be precise enough to judge (standard error at most 2 % of the answer), and spread as
 // much as the estimator does: their variance against the estimator's, at `alpha` too, beyond the
 // accuracy of the grader's quadrature.
@@ -609,17 +611,24 @@ std::string judgeCase(const EstimatorCase& c, const std::vector<Vec3>& samples, 
         line += ", z " + vec({(means[0].mean - c.expected.x) / means[0].standardError(), (means[1].mean - c.expected.y) / means[1].standardError(),
                               (means[2].mean - c.expected.z) / means[2].standardError()});
     line += "; variance " + vec({means[0].variance(), means[1].variance(), means[2].variance()}) + ", the estimator's " + vec(c.spread.variance);
+    if (c.spread.variance.x > 0.0) {
+        auto spreadZ = [&](int ch) {
+            return (means[ch].variance() - c.spread.variance[ch]) / varianceStandardError(means[ch].count, c.spread.variance[ch], c.spread.fourthMoment[ch]);
+        };
+        line += ", z " + vec({spreadZ(0), spreadZ(1), spreadZ(2)});
+    }
     details.push_back(line);
     for (int ch = 0; ch < 3; ++ch) {
         const MeanEstimate& m = means[ch];
         double expected = c.expected[ch], se = m.standardError(), variance = c.spread.variance[ch];
         std::string head = std::string(kChannels[ch]) + ": mean " + formatNumber(m.mean);
         if (se == 0.0) {
-            if (variance > 0.0)
-                return head + " from every u, where one sample of this estimator varies with u (standard deviation " + formatNumber(std::sqrt(variance)) +
-                       "): an answer that does not depend on u is no Monte Carlo sample";
+            std::string same = m.count > 1 ? " from every u" : "";
             if (!close(m.mean, expected, 1e-4) && std::abs(m.mean - expected) > 1e-7)
-                return head + ", the closed form gives " + formatNumber(expected) + matchingMistake(c, ch, m);
+                return head + same + ", the closed form gives " + formatNumber(expected) + matchingMistake(c, ch, m);
+            if (variance > 0.0)
+                return head + same + ", where one sample of this estimator varies with u (standard deviation " + formatNumber(std::sqrt(variance)) +
+                       "): an answer that does not depend on u is no Monte Carlo sample";
             continue;
         }
         double z = (m.mean - expected) / se;

@@ -500,11 +500,17 @@ std::vector<EstimatorCase> directionCases(Estimator estimator, uint64_t seed) {
     bool cosine = estimator == Estimator::CosineHemisphere;
     // The triangle lies where local y < 0, the sphere where y > 0: seen from x they never
     // overlap, so the answer is the sum of the two closed forms.
-    auto add = [&](std::string id, const DVec3& normal, const std::array<DVec3, 3>& triangle, const DVec3& centre, double radius) {
+    struct Layout {
+        DVec3 normal;
+        std::array<DVec3, 3> triangle;
+        DVec3 centre;
+        double radius;
+    };
+    auto add = [&](std::string id, const Layout& l) {
         double radiance = draw.in(1.0, 4.0);
-        ShadingPoint x = shadingPoint(place, normal);
-        TriangleEmitter t = triangleLight(place, triangle, radiance);
-        SphereEmitter s = sphereLight(place, centre, radius, radiance);
+        ShadingPoint x = shadingPoint(place, l.normal);
+        TriangleEmitter t = triangleLight(place, l.triangle, radiance);
+        SphereEmitter s = sphereLight(place, l.centre, l.radius, radiance);
         EstimatorCase c;
         c.id = std::move(id);
         c.call = call(estimator, x, kDirectionSamplesPerCase, draw);
@@ -538,32 +544,29 @@ std::vector<EstimatorCase> directionCases(Estimator estimator, uint64_t seed) {
         return DVec3{draw.in(xLo, xHi), draw.in(yLo, yHi), draw.in(zLo, zHi)};
     };
 
-    std::array<DVec3, 3> overhead = triangleAt(-0.5, 0.5, -1.2, -0.7, 1.0, 1.5, 0.5);
-    DVec3 overheadCentre = centreAt(-0.5, 0.5, 0.7, 1.3, 0.9, 1.5);
-    add("D1 a triangle and a sphere light above the point", {0, 0, 1}, overhead, overheadCentre, draw.in(0.2, 0.4));
-
-    struct Layout {
-        DVec3 normal;
-        std::array<DVec3, 3> triangle;
-        DVec3 centre;
-        double radius;
+    // Each layout: the normal, then the triangle and the sphere within their ranges, drawn
+    // again until both are wholly above the horizon.
+    auto layout = [&](const std::function<Layout()>& make) {
+        return drawUntil(make, [](const Layout& l) { return aboveHorizon(l.triangle, l.normal) && aboveHorizon(l.centre, l.radius, l.normal); });
     };
-    Layout tiltedLayout = drawUntil(
-        [&] {
+    add("D1 a triangle and a sphere light above the point", layout([&] {
+            std::array<DVec3, 3> t = triangleAt(-0.5, 0.5, -1.2, -0.7, 1.0, 1.5, 0.5);
+            DVec3 c = centreAt(-0.5, 0.5, 0.7, 1.3, 0.9, 1.5);
+            return Layout{{0, 0, 1}, t, c, draw.in(0.2, 0.4)};
+        }));
+    add("D2 a tilted point, the lights to its sides", layout([&] {
             DVec3 n = drawTiltedNormal(draw);
             std::array<DVec3, 3> t = triangleAt(-0.6, 0.6, -1.8, -1.0, 0.8, 1.4, 0.5);
             DVec3 c = centreAt(-0.6, 0.6, 1.0, 1.8, 0.8, 1.4);
             return Layout{n, t, c, draw.in(0.25, 0.45)};
-        },
-        [](const Layout& l) { return aboveHorizon(l.triangle, l.normal) && aboveHorizon(l.centre, l.radius, l.normal); });
-    add("D2 a tilted point, the lights to its sides", tiltedLayout.normal, tiltedLayout.triangle, tiltedLayout.centre, tiltedLayout.radius);
-
+        }));
     // A point on a wall: the lights in front of it reach below its height, where directions
     // about +z that were never turned to the normal do not go.
-    std::array<DVec3, 3> wallTriangle = triangleAt(0.9, 1.5, -1.1, -0.65, -0.9, -0.3, 0.5);
-    DVec3 wallCentre = centreAt(1.0, 1.6, 0.7, 1.3, -1.0, -0.4);
-    add("D3 a point on a wall (normal horizontal), lights in front of it reaching below its height", {1, 0, 0}, wallTriangle, wallCentre,
-        draw.in(0.2, 0.35));
+    add("D3 a point on a wall (normal horizontal), lights in front of it reaching below its height", layout([&] {
+            std::array<DVec3, 3> t = triangleAt(0.9, 1.5, -1.1, -0.65, -0.9, -0.3, 0.5);
+            DVec3 c = centreAt(1.0, 1.6, 0.7, 1.3, -1.0, -0.4);
+            return Layout{{1, 0, 0}, t, c, draw.in(0.2, 0.35)};
+        }));
     return cases;
 }
 

@@ -26,22 +26,24 @@ DVec3 direction(double z, double phi) {
 DVec3 towards(const DVec3& w, const DVec3& v) { return glm::normalize(v - glm::dot(v, w) * w); }
 
 DVec3 sphericalTriangle(const worker::SamplerCall& c, double ux, double uy) {
+    // A, B, C: the unit directions from p to the corners, as in the contract.
     DVec3 p(c.p);
-    DVec3 a = glm::normalize(DVec3(c.p0) - p), b = glm::normalize(DVec3(c.p1) - p), cc = glm::normalize(DVec3(c.p2) - p);
-    const DVec3 origin(0.0);
+    DVec3 A = glm::normalize(DVec3(c.p0) - p), B = glm::normalize(DVec3(c.p1) - p), C = glm::normalize(DVec3(c.p2) - p);
+    const DVec3 centre(0.0);
     // The area of A, B, C' grows monotonically as C' moves along the arc from A to C.
-    DVec3 tangent = towards(a, cc);
-    double arc = std::atan2(glm::length(glm::cross(a, cc)), glm::dot(a, cc));
-    double target = ux * triangleSolidAngleByExcess(origin, a, b, cc);
-    auto along = [&](double angle) { return std::cos(angle) * a + std::sin(angle) * tangent; };
+    DVec3 tangent = towards(A, C);
+    double arc = std::atan2(glm::length(glm::cross(A, C)), glm::dot(A, C));
+    double target = ux * triangleSolidAngleByExcess(centre, A, B, C);
+    auto along = [&](double angle) { return std::cos(angle) * A + std::sin(angle) * tangent; };
     double lo = 0.0, hi = arc;
     for (int i = 0; i < 60; ++i) {
         double mid = 0.5 * (lo + hi);
-        (triangleSolidAngleByExcess(origin, a, b, along(mid)) < target ? lo : hi) = mid;
+        if (triangleSolidAngleByExcess(centre, A, B, along(mid)) < target) lo = mid;
+        else hi = mid;
     }
     DVec3 cPrime = along(0.5 * (lo + hi));
-    double z = 1.0 - uy * (1.0 - glm::dot(cPrime, b));
-    return z * b + std::sqrt(std::max(0.0, 1.0 - z * z)) * towards(b, cPrime);
+    double z = 1.0 - uy * (1.0 - glm::dot(cPrime, B));
+    return z * B + std::sqrt(std::max(0.0, 1.0 - z * z)) * towards(B, cPrime);
 }
 
 }  // namespace
