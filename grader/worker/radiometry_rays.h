@@ -31,7 +31,8 @@ public:
     }
 
 private:
-    // A ray length beyond everything, so the emission ray's shadow trim is far below any length.
+    // The length the emission ray's direction is scaled to: twice the extent of the scene and
+    // the point, beyond every surface.
     static double reachAcross(const Scene& scene, const Vec3& point) {
         Bounds3f bounds = scene.bounds();
         bounds.extend(point);
