@@ -1,4 +1,4 @@
-// grader/statistics: the tails of the chi-square and normal distributions against printed
+// grader/kit/statistics: the tails of the chi-square and normal distributions against printed
 // tables, the Sidak level, pooling in Pearson's test, and the log-log slope.
 #include "grader/kit/statistics.h"
 
@@ -65,4 +65,29 @@ TEST_CASE("statistics: mean, standard error and the log-log slope") {
     std::vector<double> n{16, 64, 256, 1024}, error;
     for (double v : n) error.push_back(3.0 / std::sqrt(v));
     CHECK(logLogSlope(n, error) == doctest::Approx(-0.5));
+}
+
+TEST_CASE("statistics: the lower chi-square tail judges a fit too good to be random") {
+    // Two degrees of freedom: P(X <= x) = 1 - exp(-x / 2), kept exact also far below 1e-16.
+    CHECK(chiSquareLowerTail(0.1, 2) == doctest::Approx(-std::expm1(-0.05)).epsilon(1e-12));
+    CHECK(chiSquareLowerTail(1e-20, 2) == doctest::Approx(5e-21).epsilon(1e-9));
+    // Lower 1 % and 5 % points (NIST/SEMATECH e-Handbook, table 1.3.6.7.4): P(X <= c) = alpha.
+    CHECK(chiSquareLowerTail(70.065, 100) == doctest::Approx(0.01).epsilon(2e-3));
+    CHECK(chiSquareLowerTail(3.940, 10) == doctest::Approx(0.05).epsilon(2e-3));
+    // Both tails together make one.
+    CHECK(chiSquareLowerTail(575.0, 575) + chiSquareUpperTail(575.0, 575) == doctest::Approx(1.0).epsilon(1e-12));
+    // Counts that meet every cell's expectation exactly: chi^2 = 0, which independent samples
+    // reach with probability 0.
+    std::vector<double> expected{50, 30, 20}, observed{50, 30, 20};
+    ChiSquareResult quota = chiSquareTest(observed, expected);
+    CHECK(quota.chiSquare == 0.0);
+    CHECK(quota.p == 1.0);
+    CHECK(quota.pLower == 0.0);
+}
+
+TEST_CASE("statistics: the standard error of a sample variance") {
+    // Normal values: mu4 = 3 sigma^4, and Var(s^2) = 2 sigma^4 / (n - 1) exactly.
+    CHECK(varianceStandardError(101, 4.0, 48.0) == doctest::Approx(std::sqrt(2.0 * 16.0 / 100.0)).epsilon(1e-12));
+    // Values +-1 with equal odds: mu4 = sigma^4 = 1, Var(s^2) = (1 - (n - 3) / (n - 1)) / n = 2 / (n (n - 1)).
+    CHECK(varianceStandardError(11, 1.0, 1.0) == doctest::Approx(std::sqrt(2.0 / 110.0)).epsilon(1e-12));
 }

@@ -140,7 +140,7 @@ std::vector<EstimatorCurve> estimatorCurves(const EstimatorFunction& estimate) {
     struct Setup {
         Estimator estimator;
         const char* name;
-        std::vector<grader::EstimatorCase> (*cases)(Estimator);
+        std::vector<grader::EstimatorCase> (*cases)(Estimator, uint64_t seed);
     };
     const Setup setups[] = {
         {Estimator::TriangleByArea, "estimateTriangleLightByArea", grader::triangleLightCases},
@@ -151,12 +151,14 @@ std::vector<EstimatorCurve> estimatorCurves(const EstimatorFunction& estimate) {
         {Estimator::CosineHemisphere, "estimateByCosineHemisphere", grader::directionCases},
     };
     constexpr int kRuns = 16;
+    constexpr uint64_t kCurveSeed = 1;
     std::vector<EstimatorCurve> curves;
     for (const Setup& s : setups) {
         EstimatorCurve curve;
         curve.name = s.name;
         try {
-            grader::EstimatorCase c = s.cases(s.estimator).front();
+            // The cases are drawn from a grading seed; any seed shows what the curve looks like.
+            grader::EstimatorCase c = s.cases(s.estimator, kCurveSeed).front();
             curve.name += " (" + c.id + ")";
             PrimitiveSet primitives(c.scene);
             BruteForce occluders;

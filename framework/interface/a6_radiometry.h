@@ -4,8 +4,8 @@
 //
 // Shared contract:
 //  * u is a pair of independent uniform numbers in [0, 1); every sampler maps it as its comment
-//    says (the grader checks only the distribution and the pdf, the renderer's stratification
-//    needs a continuous map);
+//    says (the grader checks that mapping on given u and on samples whose u it knows, besides
+//    the distribution and the pdf; the renderer's stratification needs a continuous map);
 //  * an estimator returns ONE sample of the radiance the shading point reflects towards its
 //    viewer, L = integral of (albedo / pi) L_e cos(theta_x) over the light's solid angle, where
 //    theta_x is measured from ShadingPoint::normal; light from below the horizon
@@ -38,8 +38,10 @@ double lumensFromWatts(double watts);
 double wattsFromLumens(double lumens);
 
 // --- Solid angles (assignments/a6_radiometry/solid_angle.cpp) ----------------------------------
-// In steradians, in double, accurate to 1e-9 relative also for tiny angles (write 1 - cos a as
-// 2 sin^2(a/2) or sin^2 a / (1 + cos a): the plain difference loses every digit for a star).
+// In steradians, in double, accurate to 1e-9 relative also for tiny angles: write 1 - cos a as
+// 2 sin^2(a/2), which holds for every a in [0, pi] (the plain difference loses every digit for a
+// star). sin^2 a / (1 + cos a) holds only away from pi: fine for a sphere (a <= pi/2), but at
+// a = pi it is inf in double (1 + cos a = 0), where a cone's answer is 4 pi.
 
 // A cone of half-angle a (0 <= a <= pi), i.e. a spherical cap: 2 pi (1 - cos a).
 double solidAngleOfCone(double halfAngle);

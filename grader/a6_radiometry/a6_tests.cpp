@@ -1,19 +1,26 @@
 // Assignment a6: radiometry and Monte Carlo direct lighting (docs/a6-radiometry.md#how-the-grader-checks-it).
-// Units and solid angles by truth tables derived by hand from the definitions; samplers by
-// Pearson's chi-square test over exact expected counts (10^6 samples a run, alpha = 0.01 with
-// Sidak's correction over a test's runs) and by the pdf they report; estimators by z tests of
-// their means against closed forms (alpha = 0.01, Sidak over a test's cases and channels), a
-// failing mean named by the common mistake it matches; plain Monte Carlo's convergence by the
-// slope of its RMS error. The worker returns raw values and samples; every statistic is here.
+// Units and solid angles by truth tables derived by hand from the definitions; samplers by their
+// pinned mapping (a truth table on given u, and samples the grader picks against the u they were
+// drawn from), by Pearson's chi-square test over exact expected counts, two-sided (10^6 samples
+// a run, alpha = 0.01 with Sidak's correction over a test's runs: a fit too good to be random
+// fails as a bad one does) and by the pdf they report; estimators on cases drawn from the
+// grading seed, by z tests of their means against closed forms and of their samples' variance
+// against the estimator's own (alpha = 0.01, Sidak over a test's cases), a failing mean named
+// by the common mistake it matches; plain Monte Carlo's convergence by the slope of its RMS
+// error. The worker returns raw values and samples; every statistic is here, and a malformed
+// record fails only the test it belongs to.
+#include "framework/core/pcg32.h"
 #include "framework/oracle/closed_forms.h"
-#include "grader/kit/accelerator_checks.h"
 #include "grader/a6_radiometry/a6_tests.h"
 #include "grader/a6_radiometry/radiometry_cases.h"
 #include "grader/a6_radiometry/sampler_histograms.h"
-#include "grader/wire/scene_codec.h"
-#include "grader/kit/statistics.h"
+#include "grader/a6_radiometry/sampler_mappings.h"
 #include "grader/a6_radiometry/wire/radiometry_inputs.h"
+#include "grader/kit/accelerator_checks.h"
+#include "grader/kit/statistics.h"
+#include "grader/wire/scene_codec.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -51,6 +58,23 @@ std::string vec(const DVec3& v) {
     return text;
 }
 
+std::string pair(Vec2 u) {
+    char text[64];
+    std::snprintf(text, sizeof text, "(%.9g, %.9g)", u.x, u.y);
+    return text;
+}
+
+// Scores one test from the worker's raw results: a record that is malformed or ends early fails
+// this test alone, under its own name, whatever the other tests' records hold.
+void scoreGuarded(TestResult& result, const std::function<void()>& score) {
+    try {
+        score();
+    } catch (const WireError& e) {
+        result.details.clear();
+        markFailed(result, std::string("sent malformed results: ") + e.what());
+    }
+}
+
 // --- Truth tables: units, solid angles, the sphere integral, pdf conversion -------------------
 
 struct ValueCase {
@@ -73,7 +97,7 @@ TestGroup tableGroup(const char* title, const char* test, const std::string& stu
     TestGroup group{kA6, title, {makePhase(stub, task, std::move(input))}, {}};
     group.score = [test = std::string(test), cases, tolerance](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult result = makeResult(kA6, test);
-        if (!failedPhaseResult(run.phases[0], result)) {
+        if (!failedPhaseResult(run.phases[0], result)) scoreGuarded(result, [&] {
             ByteReader in(run.phases[0].data);
             CaseTally tally(result);
             for (const ValueCase& c : *cases) {
@@ -82,7 +106,7 @@ TestGroup tableGroup(const char* title, const char* test, const std::string& stu
                                                                      : "expected " + formatNumber(c.expected) + ", got " + formatNumber(got));
             }
             tally.finish();
-        }
+        });
         results.push_back(std::move(result));
     };
     return group;
@@ -192,13 +216,25 @@ TestGroup pdfConversionGroup() {
                                 1e-6);
 }
 
-// --- Samplers: chi-square and the pdf --------------------------------------------------------
+// --- Samplers: the pinned mapping, the histogram and the pdf --------------------------------
 
-// What one sampler's runs are judged against.
+// One row of a mapping's truth table: u, and the sample the contract pins for it, derived by
+// hand.
+struct MappingRow {
+    std::string id;  // "u = (0.25, 0): z = 0.5, phi = 0"
+    Vec2 u;
+    DVec3 expected;
+};
+
+// What one sampler is judged against: its mapping on given u and on samples of its runs the
+// grader picks, and the runs' histograms and densities.
 struct SamplerTarget {
     std::string test;
     std::string stub;
+    worker::SamplerCall tableCall;  // the configuration (cone, triangle) the truth table maps u in
+    std::vector<MappingRow> table;
     std::vector<worker::SamplerCall> runs;
+    uint64_t seed = 0;       // the grading seed: which samples of the runs are checked
     bool directions = true;  // unit vectors (else points of a triangle)
     // Per run: the histogram cell of a sample and the expected count of every cell.
     std::function<size_t(size_t run, const Vec3& value)> cellOf;
@@ -209,23 +245,27 @@ struct SamplerTarget {
     std::string pdfFormula;
 };
 
-// Every sampler's runs draw their own numbers: seed 1000 (sampler + 1) + run.
-worker::SamplerCall samplerCall(Sampler sampler, size_t run) {
+// Samples of each run checked against the pinned mapping of their u.
+constexpr size_t kMappedSamplesPerRun = 4096;
+
+// Every run draws its own numbers, from the grading seed, the sampler and the run.
+worker::SamplerCall samplerCall(Sampler sampler, size_t run, uint64_t seed) {
     worker::SamplerCall c{};
     c.sampler = sampler;
-    c.seed = 1000 * (static_cast<uint64_t>(sampler) + 1) + run;
+    c.seed = worker::callSeed(seed, 1000 + static_cast<uint64_t>(sampler), run);
     c.count = kSamplesPerRun;
     return c;
 }
 
 // Directions with a distribution uniform in phi and F for z on [zMin, 1].
-SamplerTarget directionTarget(std::string test, Sampler sampler, std::vector<float> conesOrNone, std::function<double(float, double)> zCdf,
-                              std::function<double(float, const Vec3&)> pdf, std::string formula) {
+SamplerTarget directionTarget(std::string test, Sampler sampler, uint64_t seed, std::vector<float> conesOrNone,
+                              std::function<double(float, double)> zCdf, std::function<double(float, const Vec3&)> pdf, std::string formula) {
     SamplerTarget t;
     t.test = std::move(test);
     t.stub = kStubSamplers;
+    t.seed = seed;
     for (size_t run = 0; run < conesOrNone.size(); ++run) {
-        worker::SamplerCall c = samplerCall(sampler, run);
+        worker::SamplerCall c = samplerCall(sampler, run, seed);
         c.cosThetaMax = conesOrNone[run];
         t.runs.push_back(c);
     }
@@ -245,22 +285,45 @@ SamplerTarget directionTarget(std::string test, Sampler sampler, std::vector<flo
     return t;
 }
 
-std::vector<SamplerTarget> directionTargets() {
+// The truth tables of the direction samplers: (r cos phi, r sin phi, z) with phi = 2 pi u.y and
+// r = sqrt(1 - z^2), z as each contract says.
+std::vector<SamplerTarget> directionTargets(uint64_t seed) {
     const std::vector<float> three(3, 0.0f);
-    return {
-        directionTarget("a6/samplers/uniform-sphere", Sampler::UniformSphere, three, [](float, double z) { return (z + 1.0) / 2.0; },
-                        [](float, const Vec3&) { return 1.0 / (4.0 * kPi); }, "1/(4 pi)"),
-        directionTarget("a6/samplers/uniform-hemisphere", Sampler::UniformHemisphere, three, [](float, double z) { return z; },
-                        [](float, const Vec3&) { return 1.0 / (2.0 * kPi); }, "1/(2 pi)"),
-        directionTarget("a6/samplers/cosine-hemisphere", Sampler::CosineHemisphere, three, [](float, double z) { return z * z; },
-                        [](float, const Vec3& v) { return v.z / kPi; }, "cos(theta)/pi"),
-        directionTarget("a6/samplers/uniform-cone", Sampler::UniformCone, {0.9f, 0.2f, -0.5f},
-                        [](float c, double z) { return (z - c) / (1.0 - c); },
-                        [](float c, const Vec3&) { return 1.0 / (2.0 * kPi * (1.0 - double(c))); }, "1/(2 pi (1 - cosThetaMax))"),
-    };
+    const double h = std::sqrt(0.5), s = std::sqrt(0.75);  // cos 45 degrees; r at z = 1/2
+    SamplerTarget sphere = directionTarget("a6/samplers/uniform-sphere", Sampler::UniformSphere, seed, three,
+                                           [](float, double z) { return (z + 1.0) / 2.0; }, [](float, const Vec3&) { return 1.0 / (4.0 * kPi); }, "1/(4 pi)");
+    sphere.table = {{"u = (0, 0): z = 1, the pole", {0.0f, 0.0f}, {0, 0, 1}},
+                    {"u = (0.25, 0): z = 1/2, phi = 0", {0.25f, 0.0f}, {s, 0, 0.5}},
+                    {"u = (0.5, 0.25): z = 0, phi = pi/2", {0.5f, 0.25f}, {0, 1, 0}},
+                    {"u = (0.75, 0.625): z = -1/2, phi = 5 pi/4", {0.75f, 0.625f}, {-s * h, -s * h, -0.5}},
+                    {"u = (0.875, 0.5): z = -3/4, phi = pi", {0.875f, 0.5f}, {-std::sqrt(1.0 - 0.5625), 0, -0.75}}};
+    SamplerTarget hemisphere = directionTarget("a6/samplers/uniform-hemisphere", Sampler::UniformHemisphere, seed, three,
+                                               [](float, double z) { return z; }, [](float, const Vec3&) { return 1.0 / (2.0 * kPi); }, "1/(2 pi)");
+    hemisphere.table = {{"u = (0.5, 0.125): z = 1/2, phi = pi/4", {0.5f, 0.125f}, {s * h, s * h, 0.5}},
+                        {"u = (0, 0.5): z = 0, phi = pi", {0.0f, 0.5f}, {-1, 0, 0}},
+                        {"u = (0.8, 0.75): z = 0.8, phi = 3 pi/2", {0.8f, 0.75f}, {0, -0.6, 0.8}},
+                        {"u = (0.6, 0): z = 0.6, phi = 0", {0.6f, 0.0f}, {0.8, 0, 0.6}}};
+    SamplerTarget cosine = directionTarget("a6/samplers/cosine-hemisphere", Sampler::CosineHemisphere, seed, three,
+                                           [](float, double z) { return z * z; }, [](float, const Vec3& v) { return v.z / kPi; }, "cos(theta)/pi");
+    cosine.table = {{"u = (0.36, 0): r = 0.6 on the disk, z = 0.8", {0.36f, 0.0f}, {0.6, 0, 0.8}},
+                    {"u = (0.64, 0.25): r = 0.8, z = 0.6, phi = pi/2", {0.64f, 0.25f}, {0, 0.8, 0.6}},
+                    {"u = (0, 0.3): r = 0, the normal", {0.0f, 0.3f}, {0, 0, 1}},
+                    {"u = (0.5, 0.5): r = z = sqrt(1/2), phi = pi", {0.5f, 0.5f}, {-h, 0, h}},
+                    {"u = (0.96, 0.75): r = sqrt(0.96), z = 0.2, phi = 3 pi/2", {0.96f, 0.75f}, {0, -std::sqrt(0.96), 0.2}}};
+    SamplerTarget cone = directionTarget("a6/samplers/uniform-cone", Sampler::UniformCone, seed, {0.9f, 0.2f, -0.5f},
+                                         [](float c, double z) { return (z - c) / (1.0 - c); },
+                                         [](float c, const Vec3&) { return 1.0 / (2.0 * kPi * (1.0 - double(c))); }, "1/(2 pi (1 - cosThetaMax))");
+    cone.tableCall.cosThetaMax = 0.6f;
+    cone.table = {{"cosThetaMax 0.6, u = (0.5, 0): z = 1 - 0.5 * 0.4 = 0.8", {0.5f, 0.0f}, {0.6, 0, 0.8}},
+                  {"cosThetaMax 0.6, u = (0.25, 0.25): z = 0.9, phi = pi/2", {0.25f, 0.25f}, {0, std::sqrt(0.19), 0.9}},
+                  {"cosThetaMax 0.6, u = (0, 0.7): the axis", {0.0f, 0.7f}, {0, 0, 1}},
+                  {"cosThetaMax 0.6, u = (0.875, 0.5): z = 0.65, phi = pi", {0.875f, 0.5f}, {-std::sqrt(1.0 - 0.4225), 0, 0.65}}};
+    std::vector<SamplerTarget> targets{std::move(sphere), std::move(hemisphere), std::move(cosine), std::move(cone)};
+    for (SamplerTarget& t : targets) t.tableCall.sampler = t.runs.front().sampler;
+    return targets;
 }
 
-SamplerTarget triangleTarget() {
+SamplerTarget triangleTarget(uint64_t seed) {
     struct Run {
         DVec3 p0, p1, p2;
     };
@@ -270,9 +333,18 @@ SamplerTarget triangleTarget() {
     SamplerTarget t;
     t.test = "a6/samplers/uniform-triangle";
     t.stub = kStubSamplers;
+    t.seed = seed;
     t.directions = false;
+    // p0 + b1 (2, 0, 0) + b2 (0, 0, 2) with s = sqrt(u.x), b1 = u.y s, b2 = s - b1.
+    t.tableCall.sampler = Sampler::UniformTriangle;
+    t.tableCall.p0 = {1, 2, 3}, t.tableCall.p1 = {3, 2, 3}, t.tableCall.p2 = {1, 2, 5};
+    t.table = {{"p0 (1, 2, 3), p1 (3, 2, 3), p2 (1, 2, 5), u = (0, 0.5): s = 0, p0", {0.0f, 0.5f}, {1, 2, 3}},
+               {"u = (0.25, 0.5): s = 1/2, b = (1/2, 1/4, 1/4)", {0.25f, 0.5f}, {1.5, 2, 3.5}},
+               {"u = (0.81, 0): s = 0.9, b = (0.1, 0, 0.9)", {0.81f, 0.0f}, {1, 2, 4.8}},
+               {"u = (0.64, 0.75): s = 0.8, b = (0.2, 0.6, 0.2)", {0.64f, 0.75f}, {2.2, 2, 3.4}},
+               {"u close to (1, 1): s and b1 close to 1, p1", {0x1.fffffep-1f, 0x1.fffffep-1f}, {3, 2, 3}}};
     for (size_t run = 0; run < triangles.size(); ++run) {
-        worker::SamplerCall c = samplerCall(Sampler::UniformTriangle, run);
+        worker::SamplerCall c = samplerCall(Sampler::UniformTriangle, run, seed);
         c.p0 = Vec3(triangles[run].p0), c.p1 = Vec3(triangles[run].p1), c.p2 = Vec3(triangles[run].p2);
         t.runs.push_back(c);
     }
@@ -294,7 +366,7 @@ SamplerTarget triangleTarget() {
     return t;
 }
 
-SamplerTarget sphericalTriangleTarget() {
+SamplerTarget sphericalTriangleTarget(uint64_t seed) {
     struct Run {
         DVec3 p, p0, p1, p2;
     };
@@ -304,8 +376,24 @@ SamplerTarget sphericalTriangleTarget() {
     SamplerTarget t;
     t.test = "a6/samplers/spherical-triangle";
     t.stub = kStubSphericalTriangle;
+    t.seed = seed;
+    // The octant's triangle seen from p: A = +x, B = +y, C = +z. B is the pole of the great
+    // circle through A and C, so the sub-triangle A, B, C' with C' at the angle t from A has
+    // the angles pi/2, t, pi/2 and the area t (Girard): u.x pi/2 of the octant's pi/2 puts C' at
+    // t = u.x pi/2. C' . B = 0, so the direction is z B + sqrt(1 - z^2) C' with z = 1 - u.y.
+    t.tableCall.sampler = Sampler::SphericalTriangle;
+    t.tableCall.p = {1, 2, 3}, t.tableCall.p0 = {3, 2, 3}, t.tableCall.p1 = {1, 4, 3}, t.tableCall.p2 = {1, 2, 5};
+    auto octant = [](double ux, double uy) {
+        double z = 1.0 - uy, r = std::sqrt(1.0 - z * z), angle = ux * kPi / 2.0;
+        return DVec3(r * std::cos(angle), z, r * std::sin(angle));
+    };
+    t.table = {{"the octant (1, 2, 3) + 2 (x, y, z) seen from (1, 2, 3), u = (0.5, 0.5): t = pi/4, z = 1/2", {0.5f, 0.5f}, octant(0.5, 0.5)},
+               {"u = (0, 0.2): C' = A, z = 0.8", {0.0f, 0.2f}, {0.6, 0.8, 0}},
+               {"u = (0.75, 0): z = 1, B", {0.75f, 0.0f}, {0, 1, 0}},
+               {"u = (1/3, 0.9): t = pi/6, z = 0.1", {1.0f / 3.0f, 0.9f}, octant(1.0f / 3.0f, 0.9f)},
+               {"u = (0.875, 0.5): t = 7 pi/16, z = 1/2", {0.875f, 0.5f}, octant(0.875, 0.5)}};
     for (size_t run = 0; run < configurations.size(); ++run) {
-        worker::SamplerCall c = samplerCall(Sampler::SphericalTriangle, run);
+        worker::SamplerCall c = samplerCall(Sampler::SphericalTriangle, run, seed);
         const Run& r = configurations[run];
         c.p = Vec3(r.p), c.p0 = Vec3(r.p0), c.p1 = Vec3(r.p1), c.p2 = Vec3(r.p2);
         t.runs.push_back(c);
@@ -331,15 +419,76 @@ SamplerTarget sphericalTriangleTarget() {
     return t;
 }
 
-// The problems of one run, or "" when it passes at level `alpha`.
+// The samples of run `run` the grader checks against the mapping, in increasing order: drawn
+// from the grading seed, so a sampler cannot know which.
+std::vector<uint32_t> checkedSamples(const SamplerTarget& t, size_t run) {
+    Pcg32 pick(worker::callSeed(t.seed, 2000 + static_cast<uint64_t>(t.runs[run].sampler), run), 0);
+    std::vector<uint32_t> indices;
+    for (size_t i = 0; i < kMappedSamplesPerRun; ++i) indices.push_back(pick.next() % t.runs[run].count);
+    std::sort(indices.begin(), indices.end());
+    indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
+    return indices;
+}
+
+// The mapping: every row of the truth table, then the picked samples of every run against the
+// pinned mapping of the u the worker drew them from (the same PCG32 replayed here). The problem,
+// or "".
+std::string judgeMapping(const SamplerTarget& t, const std::vector<worker::SampleResult>& table,
+                         const std::vector<std::vector<worker::SampleResult>>& runs, std::vector<std::string>& details) {
+    const char* why = " (each sampler's mapping is pinned by its contract, framework/interface/a6_radiometry.h)";
+    if (table.size() != t.table.size()) return std::to_string(table.size()) + " samples for " + std::to_string(t.table.size()) + " given u";
+    size_t wrongRows = 0;
+    std::string first;
+    for (size_t i = 0; i < t.table.size(); ++i) {
+        const MappingRow& row = t.table[i];
+        DVec3 got(table[i].value);
+        if (glm::length(got - row.expected) <= pinnedTolerance(t.tableCall)) continue;
+        std::string line = row.id + ": expected " + vec(row.expected) + ", got " + vec(got);
+        details.push_back("mapping " + line);
+        if (wrongRows++ == 0) first = line;
+    }
+    size_t checked = 0, wrong = 0;
+    std::string firstSample;
+    for (size_t k = 0; k < t.runs.size(); ++k) {
+        const worker::SamplerCall& call = t.runs[k];
+        if (runs[k].size() != call.count) continue;  // the run's own case says so
+        std::vector<uint32_t> picked = checkedSamples(t, k);
+        Pcg32 rng(call.seed, 0);
+        size_t next = 0;
+        for (uint32_t i = 0; i < call.count && next < picked.size(); ++i) {
+            Vec2 u = worker::uniformPair(rng);
+            if (i != picked[next]) continue;
+            ++next;
+            ++checked;
+            DVec3 pinned = pinnedSample(call, u), got(runs[k][i].value);
+            double off = glm::length(got - pinned);
+            if (off <= pinnedTolerance(call)) continue;
+            if (wrong++ == 0)
+                firstSample = "run " + std::to_string(k + 1) + ", sample " + std::to_string(i) + " drawn with u = " + pair(u) + ": " + vec(got) +
+                              " where the mapping gives " + vec(pinned) + " (off by " + formatNumber(off) + ", tolerance " +
+                              formatNumber(pinnedTolerance(call)) + ")";
+        }
+    }
+    details.push_back(std::to_string(checked - wrong) + " of " + std::to_string(checked) +
+                      " samples picked from the runs are the pinned mapping of the u they were drawn from" +
+                      (wrong > 0 ? "; first that is not: " + firstSample : ""));
+    if (wrongRows > 0) return std::to_string(wrongRows) + " of " + std::to_string(t.table.size()) + " given u map elsewhere" + why + "; first: " + first;
+    if (wrong > 0)
+        return std::to_string(wrong) + " of " + std::to_string(checked) + " samples are not the pinned mapping of the u they were drawn from" + why +
+               "; first: " + firstSample;
+    return "";
+}
+
+// The problems of one run, or "" when it passes at level `alpha`: both tails of the
+// chi-square distribution, alpha/2 each.
 std::string judgeRun(const SamplerTarget& t, size_t run, const std::vector<worker::SampleResult>& samples, double alpha,
                      std::vector<std::string>& details) {
     std::string tag = "run " + std::to_string(run + 1);
-    if (samples.size() != t.runs[run].count) return tag + ": " + std::to_string(samples.size()) + " samples for " + std::to_string(t.runs[run].count);
+    if (samples.size() != t.runs[run].count) return std::to_string(samples.size()) + " samples for " + std::to_string(t.runs[run].count);
     std::vector<double> observed(t.expected(run).size(), 0.0);
     for (size_t i = 0; i < samples.size(); ++i) {
         const Vec3& v = samples[i].value;
-        std::string where = tag + ", sample " + std::to_string(i) + " " + vec(DVec3(v));
+        std::string where = "sample " + std::to_string(i) + " " + vec(DVec3(v));
         if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z) || !std::isfinite(samples[i].pdf))
             return where + ": not finite (pdf " + formatNumber(samples[i].pdf) + ")";
         if (t.directions && std::abs(glm::length(DVec3(v)) - 1.0) > 1e-4) return where + ": not of unit length";
@@ -352,16 +501,20 @@ std::string judgeRun(const SamplerTarget& t, size_t run, const std::vector<worke
     std::vector<double> expected = t.expected(run);
     ChiSquareResult chi = chiSquareTest(observed, expected);
     size_t worst = chi.worstCell;
-    details.push_back(tag + ": chi^2 = " + formatNumber(chi.chiSquare) + " with " + std::to_string(chi.dof) + " degrees of freedom, p = " +
-                      formatNumber(chi.p) + " (" + std::to_string(chi.pooledCells) + " cells pooled); most off: " + t.describe(run, worst) +
-                      ", " + formatNumber(observed[worst]) + " samples for " + formatNumber(expected[worst]) + " expected");
+    std::string fit = "chi^2 = " + formatNumber(chi.chiSquare) + " with " + std::to_string(chi.dof) + " degrees of freedom";
+    std::string mostOff = "most off: " + t.describe(run, worst) + ", " + formatNumber(observed[worst]) + " samples for " +
+                          formatNumber(expected[worst]) + " expected";
+    details.push_back(tag + ": " + fit + ", P(chi^2 >= that) = " + formatNumber(chi.p) + ", P(chi^2 <= that) = " + formatNumber(chi.pLower) +
+                      " (" + std::to_string(chi.pooledCells) + " cells pooled); " + mostOff);
     if (chi.outsideObserved > 0)
-        return tag + ": " + formatNumber(chi.outsideObserved) + " of " + std::to_string(samples.size()) + " samples " +
-               t.describe(run, observed.size() - 1) + ", where the density is 0";
-    if (!(chi.p >= alpha))
-        return tag + ": the samples do not follow the distribution (chi^2 = " + formatNumber(chi.chiSquare) + ", " + std::to_string(chi.dof) +
-               " degrees of freedom, p = " + formatNumber(chi.p) + " < " + formatNumber(alpha) + "); most off: " + t.describe(run, worst) +
-               ", " + formatNumber(observed[worst]) + " samples for " + formatNumber(expected[worst]) + " expected";
+        return formatNumber(chi.outsideObserved) + " of " + std::to_string(samples.size()) + " samples " + t.describe(run, observed.size() - 1) +
+               ", where the density is 0";
+    if (!(chi.p >= alpha / 2))
+        return "the samples do not follow the distribution (" + fit + ", p = " + formatNumber(chi.p) + " < " + formatNumber(alpha / 2) + "); " +
+               mostOff;
+    if (!(chi.pLower >= alpha / 2))
+        return "the samples fit the histogram better than independent samples can (" + fit + ", P(chi^2 <= that) = " + formatNumber(chi.pLower) +
+               " < " + formatNumber(alpha / 2) + "): too good to be random, as samples placed by quota are";
     return "";
 }
 
@@ -369,6 +522,12 @@ TestGroup samplerGroup(std::shared_ptr<const SamplerTarget> t) {
     TestGroup group;
     group.assignment = kA6;
     group.title = t->test;
+    ByteWriter givenInput;
+    givenInput.put(t->tableCall);
+    std::vector<Vec2> given;
+    for (const MappingRow& row : t->table) given.push_back(row.u);
+    givenInput.putVector(given);
+    group.phases.push_back(makePhase(t->stub, worker::kTaskSamplesAt, std::move(givenInput)));
     for (const worker::SamplerCall& call : t->runs) {
         ByteWriter input;
         input.put(call);
@@ -376,27 +535,36 @@ TestGroup samplerGroup(std::shared_ptr<const SamplerTarget> t) {
     }
     group.score = [t](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult result = makeResult(kA6, t->test);
-        // Sidak over the runs: the family keeps alpha = 0.01.
-        double alpha = sidakLevel(kAlpha, static_cast<int>(t->runs.size()));
-        CaseTally tally(result);
-        for (size_t k = 0; k < t->runs.size(); ++k) {
-            if (failedPhaseResult(run.phases[k], result)) {
+        for (const PhaseOutcome& phase : run.phases)
+            if (failedPhaseResult(phase, result)) {
                 results.push_back(std::move(result));
                 return;
             }
-            ByteReader in(run.phases[k].data);
+        scoreGuarded(result, [&] {
+            std::vector<worker::SampleResult> table = ByteReader(run.phases[0].data).getVector<worker::SampleResult>(t->table.size());
+            std::vector<std::vector<worker::SampleResult>> samples;
+            for (size_t k = 0; k < t->runs.size(); ++k)
+                samples.push_back(ByteReader(run.phases[k + 1].data).getVector<worker::SampleResult>(worker::kMaxSamplesPerCall));
+            // Sidak over the runs: the family keeps alpha = 0.01.
+            double alpha = sidakLevel(kAlpha, static_cast<int>(t->runs.size()));
+            CaseTally tally(result);
             std::vector<std::string> details;
-            std::string problem = judgeRun(*t, k, in.getVector<worker::SampleResult>(worker::kMaxSamplesPerCall), alpha, details);
+            tally.record("the pinned mapping", judgeMapping(*t, table, samples, details));
+            for (size_t k = 0; k < t->runs.size(); ++k) tally.record("run " + std::to_string(k + 1), judgeRun(*t, k, samples[k], alpha, details));
+            tally.finish();
             result.details.insert(result.details.end(), details.begin(), details.end());
-            tally.record("run " + std::to_string(k + 1), problem.empty() ? "" : problem.substr(problem.find(": ") + 2));
-        }
-        tally.finish();
+        });
         results.push_back(std::move(result));
     };
     return group;
 }
 
-// --- Estimators: z tests and the mistakes they match -----------------------------------------
+// --- Estimators: z tests of the mean and of the spread, and the mistakes they match ----------
+
+// How closely the grader's quadrature gives an estimator's variance (radiometry_cases.cpp: the
+// midpoint rule on 64^2 sub-triangles of a triangle, 256^2 cells of a sphere's cap); a sample
+// variance may differ from it by this much besides the noise.
+constexpr double kSpreadAccuracy = 0.005;
 
 ChildPhase estimatorPhase(const std::string& stub, const std::vector<EstimatorCase>& cases) {
     ByteWriter input;
@@ -424,8 +592,12 @@ std::string matchingMistake(const EstimatorCase& c, int channel, const MeanEstim
 }
 
 // One case: the problem, or "". Deterministic estimates (no spread) must equal the closed form
-// within float rounding; random ones must pass the z test at `alpha` and be precise enough to
-// judge (standard error at most 2 % of the answer).
+// within float rounding (a wrong one is named by the mistake it matches), and are right only
+// where the estimator has no spread either (a point light, nothing of the light in sight);
+// random ones must pass the z test of their mean at
+// `alpha`, be precise enough to judge (standard error at most 2 % of the answer), and spread as
+// much as the estimator does: their variance against the estimator's, at `alpha` too, beyond the
+// accuracy of the grader's quadrature.
 std::string judgeCase(const EstimatorCase& c, const std::vector<Vec3>& samples, double alpha, std::vector<std::string>& details) {
     if (samples.size() != c.call.count) return std::to_string(samples.size()) + " samples for " + std::to_string(c.call.count);
     std::array<MeanEstimate, 3> means;
@@ -434,18 +606,29 @@ std::string judgeCase(const EstimatorCase& c, const std::vector<Vec3>& samples, 
             if (!std::isfinite(samples[i][ch])) return "sample " + std::to_string(i) + " is " + formatNumber(samples[i][ch]);
             means[ch].add(samples[i][ch]);
         }
-    std::string line = c.id + ": mean " + vec({means[0].mean, means[1].mean, means[2].mean}) + ", closed form " + vec(c.expected);
+    std::string line = c.id + " [" + c.inputs + "]: mean " + vec({means[0].mean, means[1].mean, means[2].mean}) + ", closed form " + vec(c.expected);
     if (means[0].standardError() > 0.0)
         line += ", z " + vec({(means[0].mean - c.expected.x) / means[0].standardError(), (means[1].mean - c.expected.y) / means[1].standardError(),
                               (means[2].mean - c.expected.z) / means[2].standardError()});
+    line += "; variance " + vec({means[0].variance(), means[1].variance(), means[2].variance()}) + ", the estimator's " + vec(c.spread.variance);
+    if (c.spread.variance.x > 0.0) {
+        auto spreadZ = [&](int ch) {
+            return (means[ch].variance() - c.spread.variance[ch]) / varianceStandardError(means[ch].count, c.spread.variance[ch], c.spread.fourthMoment[ch]);
+        };
+        line += ", z " + vec({spreadZ(0), spreadZ(1), spreadZ(2)});
+    }
     details.push_back(line);
     for (int ch = 0; ch < 3; ++ch) {
         const MeanEstimate& m = means[ch];
-        double expected = c.expected[ch], se = m.standardError();
+        double expected = c.expected[ch], se = m.standardError(), variance = c.spread.variance[ch];
         std::string head = std::string(kChannels[ch]) + ": mean " + formatNumber(m.mean);
         if (se == 0.0) {
+            std::string same = m.count > 1 ? " from every u" : "";
             if (!close(m.mean, expected, 1e-4) && std::abs(m.mean - expected) > 1e-7)
-                return head + ", the closed form gives " + formatNumber(expected) + matchingMistake(c, ch, m);
+                return head + same + ", the closed form gives " + formatNumber(expected) + matchingMistake(c, ch, m);
+            if (variance > 0.0)
+                return head + same + ", where one sample of this estimator varies with u (standard deviation " + formatNumber(std::sqrt(variance)) +
+                       "): an answer that does not depend on u is no Monte Carlo sample";
             continue;
         }
         double z = (m.mean - expected) / se;
@@ -454,6 +637,14 @@ std::string judgeCase(const EstimatorCase& c, const std::vector<Vec3>& samples, 
                    matchingMistake(c, ch, m);
         if (expected != 0.0 && se > 0.02 * std::abs(expected))
             return head + " +- " + formatNumber(se) + ": too noisy to judge (the standard error is over 2 % of " + formatNumber(expected) + ")";
+        if (variance > 0.0) {
+            double error = varianceStandardError(m.count, variance, c.spread.fourthMoment[ch]);
+            double beyond = std::max(0.0, std::abs(m.variance() - variance) - kSpreadAccuracy * variance) / error;
+            if (normalTwoSidedP(beyond) < alpha)
+                return std::string(kChannels[ch]) + ": the samples' variance " + formatNumber(m.variance()) + " where one sample of this estimator has " +
+                       formatNumber(variance) + " (z = " + formatNumber((m.variance() - variance) / error) +
+                       "): a right mean with the wrong spread is not this estimator (one sample per u, with the pinned sampler)";
+        }
     }
     return "";
 }
@@ -462,9 +653,10 @@ TestGroup estimatorGroup(std::string test, const std::string& stub, std::shared_
     TestGroup group{kA6, test, {estimatorPhase(stub, *cases)}, {}};
     group.score = [test, cases](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult result = makeResult(kA6, test);
-        if (!failedPhaseResult(run.phases[0], result)) {
-            // Sidak over every case's three channels.
-            double alpha = sidakLevel(kAlpha, static_cast<int>(3 * cases->size()));
+        if (!failedPhaseResult(run.phases[0], result)) scoreGuarded(result, [&] {
+            // Sidak over every case's two tests, of its mean and of its spread. The three channels
+            // of a case are one sample scaled by the albedo, with the same z.
+            double alpha = sidakLevel(kAlpha, static_cast<int>(2 * cases->size()));
             ByteReader in(run.phases[0].data);
             CaseTally tally(result);
             std::vector<std::string> lines;
@@ -472,7 +664,7 @@ TestGroup estimatorGroup(std::string test, const std::string& stub, std::shared_
                 tally.record(c.id, judgeCase(c, in.getVector<Vec3>(worker::kMaxSamplesPerCall), alpha, lines));
             tally.finish();
             result.details.insert(result.details.end(), lines.begin(), lines.end());
-        }
+        });
         results.push_back(std::move(result));
     };
     return group;
@@ -481,13 +673,13 @@ TestGroup estimatorGroup(std::string test, const std::string& stub, std::shared_
 // Plain Monte Carlo: the RMS error of means of N independent samples falls as N^-1/2. Batches
 // of N from one long run of the area estimator on case T1; the slope of log RMS against log N
 // must be -0.5 +- 0.05.
-TestGroup convergenceGroup() {
-    auto c = std::make_shared<EstimatorCase>(triangleLightCases(Estimator::TriangleByArea).front());
+TestGroup convergenceGroup(uint64_t seed) {
+    auto c = std::make_shared<EstimatorCase>(triangleLightCases(Estimator::TriangleByArea, seed).front());
     c->call.count = worker::kMaxSamplesPerCall;
     TestGroup group{kA6, "a6 convergence of plain Monte Carlo", {estimatorPhase(kStubLightEstimators, {*c})}, {}};
     group.score = [c](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult result = makeResult(kA6, "a6/estimators/convergence");
-        if (!failedPhaseResult(run.phases[0], result)) {
+        if (!failedPhaseResult(run.phases[0], result)) scoreGuarded(result, [&] {
             ByteReader in(run.phases[0].data);
             std::vector<Vec3> samples = in.getVector<Vec3>(worker::kMaxSamplesPerCall);
             std::vector<double> sizes, rms;
@@ -514,7 +706,7 @@ TestGroup convergenceGroup() {
                                        "; plain Monte Carlo falls as N^-0.5 (+-0.05): an error that levels off is a bias, one that "
                                        "does not fall is no sampling at all");
             }
-        }
+        });
         results.push_back(std::move(result));
     };
     return group;
@@ -522,24 +714,25 @@ TestGroup convergenceGroup() {
 
 }  // namespace
 
-std::vector<TestGroup> a6Groups(GradingContext&) {
+std::vector<TestGroup> a6Groups(GradingContext& context) {
+    const uint64_t seed = context.seed;
     std::vector<TestGroup> groups{unitsGroup()};
     for (TestGroup& g : solidAngleGroups()) groups.push_back(std::move(g));
-    for (SamplerTarget& t : directionTargets()) groups.push_back(samplerGroup(std::make_shared<SamplerTarget>(std::move(t))));
-    groups.push_back(samplerGroup(std::make_shared<SamplerTarget>(triangleTarget())));
-    groups.push_back(samplerGroup(std::make_shared<SamplerTarget>(sphericalTriangleTarget())));
+    for (SamplerTarget& t : directionTargets(seed)) groups.push_back(samplerGroup(std::make_shared<SamplerTarget>(std::move(t))));
+    groups.push_back(samplerGroup(std::make_shared<SamplerTarget>(triangleTarget(seed))));
+    groups.push_back(samplerGroup(std::make_shared<SamplerTarget>(sphericalTriangleTarget(seed))));
     groups.push_back(pdfConversionGroup());
     auto add = [&](std::string test, const std::string& stub, std::vector<EstimatorCase> cases) {
         groups.push_back(estimatorGroup(std::move(test), stub, std::make_shared<const std::vector<EstimatorCase>>(std::move(cases))));
     };
-    add("a6/estimators/point-light", kStubLightEstimators, pointLightCases());
-    add("a6/estimators/triangle-area", kStubLightEstimators, triangleLightCases(Estimator::TriangleByArea));
-    add("a6/estimators/triangle-solid-angle", kStubLightEstimators, triangleLightCases(Estimator::TriangleBySolidAngle));
-    add("a6/estimators/sphere-area", kStubLightEstimators, sphereLightCases(Estimator::SphereByArea));
-    add("a6/estimators/sphere-solid-angle", kStubLightEstimators, sphereLightCases(Estimator::SphereBySolidAngle));
-    add("a6/estimators/uniform-hemisphere", kStubDirectionEstimators, directionCases(Estimator::UniformHemisphere));
-    add("a6/estimators/cosine-hemisphere", kStubDirectionEstimators, directionCases(Estimator::CosineHemisphere));
-    groups.push_back(convergenceGroup());
+    add("a6/estimators/point-light", kStubLightEstimators, pointLightCases(seed));
+    add("a6/estimators/triangle-area", kStubLightEstimators, triangleLightCases(Estimator::TriangleByArea, seed));
+    add("a6/estimators/triangle-solid-angle", kStubLightEstimators, triangleLightCases(Estimator::TriangleBySolidAngle, seed));
+    add("a6/estimators/sphere-area", kStubLightEstimators, sphereLightCases(Estimator::SphereByArea, seed));
+    add("a6/estimators/sphere-solid-angle", kStubLightEstimators, sphereLightCases(Estimator::SphereBySolidAngle, seed));
+    add("a6/estimators/uniform-hemisphere", kStubDirectionEstimators, directionCases(Estimator::UniformHemisphere, seed));
+    add("a6/estimators/cosine-hemisphere", kStubDirectionEstimators, directionCases(Estimator::CosineHemisphere, seed));
+    groups.push_back(convergenceGroup(seed));
     return groups;
 }
 

@@ -53,7 +53,14 @@ double upperIncompleteGamma(double a, double x) {
     return x < a + 1.0 ? 1.0 - lowerBySeries(a, x) : upperByContinuedFraction(a, x);
 }
 
+double lowerIncompleteGamma(double a, double x) {
+    if (!(x > 0.0)) return 0.0;
+    return x < a + 1.0 ? lowerBySeries(a, x) : 1.0 - upperByContinuedFraction(a, x);
+}
+
 double chiSquareUpperTail(double chiSquare, int dof) { return upperIncompleteGamma(0.5 * dof, 0.5 * chiSquare); }
+
+double chiSquareLowerTail(double chiSquare, int dof) { return lowerIncompleteGamma(0.5 * dof, 0.5 * chiSquare); }
 
 double normalTwoSidedP(double z) { return std::erfc(std::abs(z) / std::sqrt(2.0)); }
 
@@ -98,7 +105,10 @@ ChiSquareResult chiSquareTest(std::span<const double> observed, std::span<const 
         ++result.dof;
     }
     result.dof -= 1;
-    result.p = result.dof > 0 ? chiSquareUpperTail(result.chiSquare, result.dof) : 1.0;
+    if (result.dof > 0) {
+        result.p = chiSquareUpperTail(result.chiSquare, result.dof);
+        result.pLower = chiSquareLowerTail(result.chiSquare, result.dof);
+    }
     return result;
 }
 
@@ -110,6 +120,11 @@ void MeanEstimate::add(double x) {
 }
 
 double MeanEstimate::standardError() const { return std::sqrt(variance() / static_cast<double>(count)); }
+
+double varianceStandardError(size_t count, double variance, double fourthCentralMoment) {
+    auto n = static_cast<double>(count);
+    return std::sqrt(std::max(0.0, fourthCentralMoment - variance * variance * (n - 3.0) / (n - 1.0)) / n);
+}
 
 double logLogSlope(std::span<const double> x, std::span<const double> y) {
     double n = static_cast<double>(x.size()), sx = 0, sy = 0, sxx = 0, sxy = 0;

@@ -14,17 +14,22 @@ namespace rtlab::grader {
 double sidakLevel(double alpha, int tests);
 
 // Q(a, x) = Gamma(a, x) / Gamma(a), the regularised upper incomplete gamma function (series
-// for x < a + 1, Lentz's continued fraction above).
+// for x < a + 1, Lentz's continued fraction above), and P(a, x) = 1 - Q(a, x); each small one
+// computed as itself, never as 1 minus the other: a tail far below 1e-16 keeps its digits.
 double upperIncompleteGamma(double a, double x);
-// P(X >= chiSquare) for X chi-square distributed with `dof` degrees of freedom.
+double lowerIncompleteGamma(double a, double x);
+// P(X >= chiSquare) and P(X <= chiSquare) for X chi-square distributed with `dof` degrees of
+// freedom: small for a fit too bad, and for a fit too good to come from independent samples.
 double chiSquareUpperTail(double chiSquare, int dof);
+double chiSquareLowerTail(double chiSquare, int dof);
 // P(|Z| >= |z|) for a standard normal Z.
 double normalTwoSidedP(double z);
 
 struct ChiSquareResult {
     double chiSquare = 0.0;
     int dof = 0;
-    double p = 1.0;
+    double p = 1.0;       // P(X >= chiSquare): small when the samples miss the distribution
+    double pLower = 1.0;  // P(X <= chiSquare): small when they fit it better than chance would
     size_t pooledCells = 0;       // cells of expected count < minExpected, summed into one
     double outsideObserved = 0.0;  // samples in cells of expected count 0
     size_t worstCell = 0;          // the cell with the largest (O - E)^2 / E
@@ -46,6 +51,12 @@ struct MeanEstimate {
     double variance() const { return count > 1 ? sumSquaredDeviations / static_cast<double>(count - 1) : 0.0; }
     double standardError() const;
 };
+
+// The standard error of the variance s^2 (Bessel-corrected) of n values drawn from a
+// distribution of variance sigma^2 and fourth central moment mu4:
+// Var(s^2) = (mu4 - sigma^4 (n - 3) / (n - 1)) / n. s^2 is nearly normal for large n when mu4
+// is finite, so (s^2 - sigma^2) / this is a z statistic.
+double varianceStandardError(size_t n, double variance, double fourthCentralMoment);
 
 // The least-squares slope of log(y) against log(x).
 double logLogSlope(std::span<const double> x, std::span<const double> y);

@@ -4,6 +4,8 @@
 // answers the grader expects.
 #pragma once
 
+#include "framework/core/fnv1a.h"
+#include "framework/core/pcg32.h"
 #include "framework/interface/radiometry.h"
 
 #include <cstdint>
@@ -15,6 +17,7 @@ inline constexpr const char* kTaskUnits = "a6-units";                // [UnitCal
 inline constexpr const char* kTaskSolidAngles = "a6-solid-angles";   // [SolidAngleCall] -> per call f64
 inline constexpr const char* kTaskSphereIntegrals = "a6-integrals";  // [IntegralCall] -> per call f64
 inline constexpr const char* kTaskSamples = "a6-samples";            // SamplerCall -> count x (Vec3, f32 pdf)
+inline constexpr const char* kTaskSamplesAt = "a6-samples-at";       // SamplerCall, [Vec2 u] -> per u (Vec3, f32 pdf)
 inline constexpr const char* kTaskPdfConversions = "a6-pdf";         // [PdfCall] -> per call f32
 inline constexpr const char* kTaskEstimates = "a6-estimates";        // [scene, EstimatorCall] -> per call count x Vec3
 
@@ -56,6 +59,20 @@ struct SampleResult {
     Vec3 value;  // the direction, or the point of UniformTriangle
     float pdf;
 };
+
+// The seed of one call's uniform numbers: FNV-1a over the grading seed, the kind of call and its
+// index, so that neighbouring grading seeds, kinds and indices give unrelated PCG32 streams.
+inline uint64_t callSeed(uint64_t gradingSeed, uint64_t kind, uint64_t index) {
+    const uint64_t words[3] = {gradingSeed, kind, index};
+    return fnv1a64(words, sizeof words);
+}
+
+// The pair of uniform numbers a sampler or an estimator gets, u.x drawn first: the worker draws
+// them, the grader replays them to check each sample against the u it came from.
+inline Vec2 uniformPair(Pcg32& rng) {
+    float x = rng.uniform();
+    return Vec2(x, rng.uniform());
+}
 
 struct PdfCall {
     float pdfArea, distanceSquared, cosThetaLight;

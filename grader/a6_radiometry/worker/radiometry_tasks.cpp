@@ -1,18 +1,19 @@
 // a6's functions on the grader's inputs: units, solid angles and the sphere integral one call at
-// a time; samplers and estimators `count` times on uniform numbers drawn here from the call's
-// seed (PCG32, stream = the call's index), returning every sample raw. The estimators' shadow
-// and emitter rays go to the exact oracle, so a6 is graded without any other assignment's code.
+// a time; samplers on given u, and samplers and estimators `count` times on uniform numbers
+// drawn here from the call's seed (PCG32, stream = the call's index), returning every sample
+// raw. The estimators' shadow and emitter rays go to the exact oracle, so a6 is graded without
+// any other assignment's code.
 #include "framework/core/pcg32.h"
 #include "framework/interface/a6_radiometry.h"
-#include "framework/oracle/oracle.h"
-#include "framework/render/spawn_ray.h"
-#include "framework/scene/emitters.h"
-#include "grader/wire/scene_codec.h"
 #include "grader/a6_radiometry/wire/radiometry_inputs.h"
+#include "framework/render/oracle_rays.h"
+#include "grader/wire/scene_codec.h"
 #include "grader/worker/worker_tasks.h"
 
+#include <algorithm>
 #include <cmath>
-#include <limits>
+#include <functional>
+#include <vector>
 
 namespace rtlab::grader::worker {
 namespace {
@@ -70,35 +71,6 @@ SampleResult sample(const SamplerCall& c, Vec2 u) {
     throw WireError("an unknown sampler");
 }
 
-Vec2 uniformPair(Pcg32& rng) {
-    float x = rng.uniform();
-    return Vec2(x, rng.uniform());
-}
-
-// SceneRays answered exactly: the grader's shading points float in space (no surface under
-// them), so rays start at the point itself and only the shadow-ray trims of the renderer apply.
-class OracleRays : public SceneRays {
-public:
-    OracleRays(const Scene& scene, const Oracle& oracle, const Vec3& point, double reach)
-        : scene_(scene), oracle_(oracle), point_(point), reach_(reach) {}
-
-    bool visible(const Vec3& target) const override {
-        OracleRay ray{DVec3(point_), DVec3(target) - DVec3(point_), kShadowEpsilon, 1.0 - kShadowEpsilon};
-        return !oracle_.anyHit(ray);
-    }
-    Vec3 incomingEmission(const Vec3& direction) const override {
-        OracleRay ray{DVec3(point_), DVec3(direction) * reach_, kShadowEpsilon, std::numeric_limits<double>::infinity()};
-        OracleHit hit = oracle_.closestHit(ray);
-        return hit.hit ? emittedRadiance(scene_, hit.prim, Vec3(hit.normal), -direction) : Vec3(0.0f);
-    }
-
-private:
-    const Scene& scene_;
-    const Oracle& oracle_;
-    Vec3 point_;
-    double reach_;
-};
-
 Vec3 estimate(const EstimatorCall& c, Vec2 u, const SceneRays& rays) {
     switch (c.estimator) {
         case Estimator::PointLight: return estimatePointLight(c.point, c.pointLight, rays);
@@ -136,6 +108,13 @@ void runSamples(ByteReader& input, ByteWriter& output, WorkerState&) {
     for (uint32_t i = 0; i < call.count; ++i) output.put(sample(call, uniformPair(rng)));
 }
 
+void runSamplesAt(ByteReader& input, ByteWriter& output, WorkerState&) {
+    auto call = input.get<SamplerCall>();
+    std::vector<Vec2> given = input.getVector<Vec2>(kMaxCalls);
+    output.put<uint64_t>(given.size());
+    for (Vec2 u : given) output.put(sample(call, u));
+}
+
 void runPdfConversions(ByteReader& input, ByteWriter& output, WorkerState&) {
     for (const PdfCall& call : input.getVector<PdfCall>(kMaxCalls))
         output.put<float>(areaToSolidAnglePdf(call.pdfArea, call.distanceSquared, call.cosThetaLight));
@@ -149,9 +128,7 @@ void runEstimates(ByteReader& input, ByteWriter& output, WorkerState& state) {
         auto call = input.get<EstimatorCall>();
         if (call.count > kMaxSamplesPerCall) throw WireError("too many samples");
         Oracle oracle(state.scene);
-        Bounds3f bounds = state.scene.bounds();
-        bounds.extend(call.point.position);
-        OracleRays rays(state.scene, oracle, call.point.position, 2.0 * glm::length(bounds.diagonal()));
+        OracleRays rays(state.scene, oracle, call.point.position);
         Pcg32 rng(call.seed, k);
         output.put<uint64_t>(call.count);
         for (uint32_t i = 0; i < call.count; ++i) output.put(estimate(call, uniformPair(rng), rays));
@@ -160,6 +137,7 @@ void runEstimates(ByteReader& input, ByteWriter& output, WorkerState& state) {
 
 const TaskRegistration registration{{kTaskUnits, runUnits},         {kTaskSolidAngles, runSolidAngles},
                                     {kTaskSphereIntegrals, runSphereIntegrals}, {kTaskSamples, runSamples},
+                                    {kTaskSamplesAt, runSamplesAt},
                                     {kTaskPdfConversions, runPdfConversions}, {kTaskEstimates, runEstimates}};
 
 }  // namespace
