@@ -1,7 +1,6 @@
 #include "fast/wide_bvh_accelerator.h"
 
 #include "fast/simd.h"
-#include "framework/accel/bvh_accelerator.h"
 #include "framework/core/float_bits.h"
 #include "framework/interface/a1_bvh.h"
 
@@ -127,8 +126,7 @@ template <int W>
 void WideBvhAccelerator<W>::build(const PrimitiveSet& primitives) {
     primitives_ = &primitives;
     hasSpheres_ = primitives.triangleCount() < primitives.size();
-    std::vector<BuildPrimitive> prims = buildPrimitivesOf(primitives);
-    WideBvh<W> wide = prims.empty() ? WideBvh<W>{} : collapseToWide<W>(buildBvh(std::move(prims), options_));
+    WideBvh<W> wide = primitives.size() == 0 ? WideBvh<W>{} : makeTree_(primitives);
 
     // Each leaf's primitives go into packets of four, in the order the nodes are stored (depth
     // first), so a leaf reads consecutive memory. A sphere takes a lane with no triangle and is
