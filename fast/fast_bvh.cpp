@@ -18,7 +18,7 @@ constexpr const char* kDefaultWidth = "4";
 template <int W>
 std::unique_ptr<Accelerator> wideBvhOf(const WideBvhBuildOptions& options) {
     return std::make_unique<WideBvhAccelerator<W>>(
-        [options](const PrimitiveSet& prims) { return buildWideBvh<W>(prims.allBounds(), options); });
+        [options](const PrimitiveSet& prims) { return buildWideBvh<W>(prims.allBounds(), options); }, options.threads);
 }
 
 // Parses fastbvh's options (validated against their ranges by the registry).

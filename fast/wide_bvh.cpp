@@ -71,7 +71,7 @@ WideBvh<W> collapseToWide(const Bvh& binary) {
     WideBvh<W> wide;
     if (binary.nodes.empty()) return wide;
     wide.nodes.reserve(binary.nodes.size() / 2 + 1);  // about a third are needed; never regrows
-    wide.primIndices = binary.primIndices;
+    wide.primIndices.assign(binary.primIndices.begin(), binary.primIndices.end());
     Collapser<W>(binary, wide).emit(0);
     return wide;
 }

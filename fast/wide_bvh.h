@@ -48,8 +48,8 @@ static_assert(sizeof(WideBvhNode<4>) == 128 && sizeof(WideBvhNode<8>) == 256,
 
 template <int W>
 struct WideBvh {
-    std::vector<WideBvhNode<W>, HugePageAllocator<WideBvhNode<W>>> nodes;  // [0] is the root, depth first
-    std::vector<uint32_t> primIndices;  // ids in leaf order (the binary tree's)
+    HugePageVector<WideBvhNode<W>> nodes;  // [0] is the root
+    HugePageVector<uint32_t> primIndices;  // ids in leaf order
 };
 
 // Folds a binary BVH into a W-wide one. A node's children are found by repeatedly opening the

@@ -13,6 +13,7 @@
 // -mavx or -march=native; without, the compiler splits it into two 4-wide halves).
 #pragma once
 
+#include "fast/task_pool.h"
 #include "fast/triangle_packet.h"
 #include "fast/wide_bvh.h"
 #include "framework/accel/accelerator.h"
@@ -27,7 +28,10 @@ public:
     // Makes the wide tree over a primitive set (never called for an empty one).
     using TreeBuilder = std::function<WideBvh<W>(const PrimitiveSet&)>;
 
-    explicit WideBvhAccelerator(TreeBuilder makeTree) : makeTree_(std::move(makeTree)) {}
+    // packingThreads: how many threads copy the triangles into the leaves' packets (0: every CPU
+    // the process may use).
+    WideBvhAccelerator(TreeBuilder makeTree, int packingThreads)
+        : makeTree_(std::move(makeTree)), packingThreads_(packingThreads > 0 ? packingThreads : availableCpus()) {}
 
     void build(const PrimitiveSet& primitives) override;
     // Node visits count wide nodes (W box tests each).
@@ -48,12 +52,13 @@ private:
     bool intersectSpheres(const TrianglePacket& packet, const Ray& ray, Hit& hit) const;
 
     TreeBuilder makeTree_;
+    int packingThreads_;
     const PrimitiveSet* primitives_ = nullptr;
     bool hasSpheres_ = false;
     // The wide tree; a leaf child refers to its first packet (kLeafFlag | packet index), and
     // its primCount primitives fill that packet and the next ones, four to a packet.
-    std::vector<WideBvhNode<W>, HugePageAllocator<WideBvhNode<W>>> nodes_;
-    std::vector<TrianglePacket, HugePageAllocator<TrianglePacket>> packets_;
+    HugePageVector<WideBvhNode<W>> nodes_;
+    HugePageVector<TrianglePacket> packets_;
 };
 
 }  // namespace rtlab

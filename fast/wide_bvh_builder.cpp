@@ -3,7 +3,6 @@
 #include "fast/simd.h"
 #include "fast/task_pool.h"
 #include "fast/triangle_packet.h"
-#include "fast/uninitialised_allocator.h"
 #include "framework/core/error.h"
 #include "framework/interface/a1_bvh.h"
 
@@ -56,7 +55,7 @@ struct PrimRef {
     Float4 centre2() const { return __builtin_shuffle(lower, Float4{}, Int4{0, 1, 2, 4}) + upper; }
 };
 
-using PrimRefs = std::vector<PrimRef, UninitialisedAllocator<PrimRef>>;
+using PrimRefs = HugePageVector<PrimRef>;
 
 // Primitives [begin, end) of the reference array with their boxes and the box of their centres
 // (twice the centres, as PrimRef::centre2), at binary depth `depth` below the root.
@@ -141,12 +140,9 @@ struct Child {
 };
 
 template <int W>
-using NodeArray = std::vector<WideBvhNode<W>, UninitialisedAllocator<WideBvhNode<W>>>;
-
-template <int W>
 class Builder {
 public:
-    Builder(PrimRefs& refs, const WideBvhBuildOptions& options, TaskPool& pool, NodeArray<W>& nodes)
+    Builder(PrimRefs& refs, const WideBvhBuildOptions& options, TaskPool& pool, HugePageVector<WideBvhNode<W>>& nodes)
         : refs_(refs), options_(options), pool_(pool), nodes_(nodes) {}
 
     // The verdict on a range: a leaf, or the split the SAH prefers.
@@ -315,7 +311,7 @@ private:
     PrimRefs& refs_;
     const WideBvhBuildOptions& options_;
     TaskPool& pool_;
-    NodeArray<W>& nodes_;
+    HugePageVector<WideBvhNode<W>>& nodes_;
     std::atomic<uint32_t> nodeCount_{0};
     std::atomic<int> pending_{0};
 };
@@ -355,13 +351,13 @@ WideBvh<W> buildWideBvh(std::span<const Bounds3f> primBounds, const WideBvhBuild
         root.centres.extend(part.centres);
     }
 
-    // A tree whose nodes all have two children or more has fewer nodes than primitives; the
-    // pages of the unused rest are never touched.
-    NodeArray<W> nodes(std::max(n, 2u) - 1);
-    Builder<W> builder(refs, options, pool, nodes);
+    // A tree whose nodes all have two children or more has fewer nodes than primitives. The
+    // pages of the capacity that the tree does not use are never touched, so they cost address
+    // space, not memory, and the nodes need no copy into an array of the right size.
+    wide.nodes.resize(std::max(n, 2u) - 1);
+    Builder<W> builder(refs, options, pool, wide.nodes);
     builder.buildRoot(builder.decide(root));
-
-    wide.nodes.assign(nodes.begin(), nodes.begin() + builder.nodeCount());
+    wide.nodes.resize(builder.nodeCount());
     wide.primIndices.resize(n);
     for (uint32_t i = 0; i < n; ++i) wide.primIndices[i] = refs[i].id();
     return wide;

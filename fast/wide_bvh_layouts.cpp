@@ -13,9 +13,12 @@ template <int W>
 AcceleratorType wideBvhType(const char* name, const char* description, int speedRank) {
     return {name, description, bvhTreeOptions(),
             [](const AcceleratorParameters& p) {
-                return std::make_unique<WideBvhAccelerator<W>>([options = bvhOptionsFrom(p)](const PrimitiveSet& prims) {
-                    return collapseToWide<W>(buildBvh(buildPrimitivesOf(prims), options));
-                });
+                // The student's tree is built on one thread, and so are its packets.
+                return std::make_unique<WideBvhAccelerator<W>>(
+                    [options = bvhOptionsFrom(p)](const PrimitiveSet& prims) {
+                        return collapseToWide<W>(buildBvh(buildPrimitivesOf(prims), options));
+                    },
+                    1);
             },
             {std::string(name) + "-sah", std::string(name) + "-buckets:12"}, speedRank};
 }
