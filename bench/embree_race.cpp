@@ -12,10 +12,12 @@
 #include "framework/core/error.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <thread>
 
 namespace rtlab::bench {
 namespace {
@@ -25,6 +27,7 @@ constexpr double kRatioTarget = 1.0;          // ours at least as fast as Embree
 constexpr double kBytesPerTriangleTarget = 80.0;
 constexpr const char* kBuildTargetScene = "sphereflake";
 constexpr int kBuildTargetThreads = 2;
+constexpr std::chrono::milliseconds kPauseBeforeBuild{50};
 
 std::string format(const char* pattern, double value) {
     char text[64];
@@ -74,6 +77,9 @@ RaceRow raceQueries(RaceRow row, const RaceOptions& options, const Pass& pass) {
 RaceRow raceBuilds(const std::string& scene, int threads, const RaceOptions& options, BenchSystem& ours,
                    BenchSystem& embree) {
     auto build = [threads](BenchSystem& system) {
+        // Embree's worker threads spin for a while after its build before they sleep; a pause
+        // before every build keeps them from competing with the build that comes next.
+        std::this_thread::sleep_for(kPauseBeforeBuild);
         std::optional<PinToCpu0> pin;  // one thread: the process on CPU 0, so rtlab's builder sees one CPU
         if (threads == 1) pin.emplace();
         return system.build(threads);

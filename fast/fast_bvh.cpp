@@ -5,6 +5,8 @@
 #include "fast/wide_bvh_builder.h"
 #include "framework/accel/accelerator_registry.h"
 
+#include <cstdio>
+
 namespace rtlab {
 namespace {
 
@@ -19,6 +21,12 @@ template <int W>
 std::unique_ptr<Accelerator> wideBvhOf(const WideBvhBuildOptions& options) {
     return std::make_unique<WideBvhAccelerator<W>>(
         [options](const PrimitiveSet& prims) { return buildWideBvh<W>(prims.allBounds(), options); }, options.threads);
+}
+
+std::string numberText(float value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
 }
 
 // Parses fastbvh's options (validated against their ranges by the registry).
@@ -40,7 +48,7 @@ AcceleratorType fastBvhType() {
                 {"width", "children per node", kDefaultWidth, 0, 0, false, {"4", "8"}},
                 {"leaf", "largest leaf (triangles)", std::to_string(defaults.maxLeaf), 1, 1024, true, {}},
                 {"bins", "SAH bins per axis", std::to_string(defaults.bins), 2, kMaxSahBins, true, {}},
-                {"Ci", "cost of a packet test, in node tests", "1", 0.125, 8, false, {}},
+                {"Ci", "cost of a packet test, in node tests", numberText(defaults.packetCost), 0.125, 8, false, {}},
                 {"threads", "build threads (0: every CPU the process may use)", "0", 0, 256, true, {}},
             },
             createFastBvh,
