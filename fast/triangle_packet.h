@@ -75,12 +75,9 @@ public:
         float dz = direction[kz];
         valid_ = dz != 0.0f;  // false for a zero-length or NaN direction
         for (int i = 0; i < 3; ++i) origin_[i] = broadcast<4>(origin[axis_[i]]);
-        // a0's three divisions, -d[kx] / dz, -d[ky] / dz and 1 / dz, as one SIMD division: the
-        // same IEEE quotients.
-        Lanes shear = Lanes{-direction[kx], -direction[ky], 1.0f, 1.0f} / broadcast<4>(dz);
-        sx_ = broadcast<4>(shear[0]);
-        sy_ = broadcast<4>(shear[1]);
-        sz_ = broadcast<4>(shear[2]);
+        sx_ = broadcast<4>(-direction[kx] / dz);
+        sy_ = broadcast<4>(-direction[ky] / dz);
+        sz_ = broadcast<4>(1.0f / dz);
         tMin_ = broadcast<4>(ray.tMin);
     }
 

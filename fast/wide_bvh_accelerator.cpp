@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <atomic>
 #include <bit>
-#include <cmath>
 #include <cstring>
 
 namespace rtlab {
@@ -37,15 +36,12 @@ struct WideRay {
     int nearRow[3], farRow[3];
 
     explicit WideRay(const Ray& ray) : tMin(broadcast<W>(ray.tMin)) {
-        // RayInverse's three reciprocals as one SIMD division: the same IEEE quotients, a third
-        // of the latency in the set-up that most primary rays (those that miss) are all about.
-        const Simd<float, 4> inverse = broadcast<4>(1.0f) / Simd<float, 4>{ray.direction.x, ray.direction.y, ray.direction.z, 1.0f};
-        const Simd<float, 4> farInverse = inverse * kFarScale;
+        RayInverse inverse(ray);
         for (int axis = 0; axis < 3; ++axis) {
-            origin[axis] = broadcast<W>(ray.origin[axis]);
-            invDirection[axis] = broadcast<W>(inverse[axis]);
-            farInvDirection[axis] = broadcast<W>(farInverse[axis]);
-            bool negative = std::signbit(ray.direction[axis]);  // as RayInverse: -0 is negative, 1/-0 = -inf
+            origin[axis] = broadcast<W>(inverse.origin[axis]);
+            invDirection[axis] = broadcast<W>(inverse.invDirection[axis]);
+            farInvDirection[axis] = broadcast<W>(inverse.invDirection[axis] * kFarScale);
+            bool negative = inverse.dirIsNegative[axis];
             nearRow[axis] = negative ? WideBvhNode<W>::upperRow(axis) : WideBvhNode<W>::lowerRow(axis);
             farRow[axis] = negative ? WideBvhNode<W>::lowerRow(axis) : WideBvhNode<W>::upperRow(axis);
         }
