@@ -121,7 +121,7 @@ std::vector<double> RaceRow::ratios() const {
 double RaceRow::medianRatio() const { return median(ratios()); }
 
 RaceOptions quickRace(RaceOptions options) {
-    options.scenes = {"bunny"};
+    if (options.scenes.empty()) options.scenes = {"bunny"};
     options.rounds = kMinRounds;
     options.roundSeconds = 0.0;
     options.rayStride = 16;
@@ -140,6 +140,8 @@ RaceResult runRace(const RaceOptions& options) {
     for (const std::string& sceneName : scenes) {
         std::cerr << "bench: race on " << sceneName << std::flush;
         Scene scene = loadBenchScene(sceneName, options.modelsDir);
+        if (!scene.spheres.empty())
+            throw Error(sceneName + ": the race against Embree takes triangle meshes only (Embree gets no spheres)");
         PrimitiveSet primitives(scene);
         Bounds3f bounds = benchRayBounds(sceneName, scene);
         AcceleratorSpec spec;
