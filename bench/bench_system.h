@@ -20,6 +20,13 @@ struct BenchRay {
     Vec3 direction;
 };
 
+// A shadow ray: blocked when anything lies at tMin = 0 < t <= tMax along it (an any-hit query).
+struct BenchSegment {
+    Vec3 origin;
+    Vec3 direction;
+    float tMax;
+};
+
 // What every query stores: the hit distance and primitive (kNoHit on a miss).
 struct TraceResult {
     float t = kInfinity;
@@ -32,13 +39,18 @@ public:
 
     // "rtlab:bvh-buckets:12", "embree:medium", ...
     virtual std::string label() const = 0;
-    // Builds afresh with up to `threads` threads (rtlab's builders are single-threaded and
-    // ignore it). Only the build itself is timed, so the return value is its wall time in ms.
+    // Builds afresh with up to `threads` threads (rtlab's builders take the CPUs the process may
+    // use, so a 1T build runs pinned to one CPU). Only the build itself is timed, so the return
+    // value is its wall time in ms.
     virtual double build(int threads) = 0;
     // Closest hits of rays; stats receives node visits and primitive tests where the system
     // counts them (rtlab does, Embree's release build does not).
     virtual void trace(std::span<const BenchRay> rays, TraceResult* results, TraversalStats& stats) const = 0;
+    // Any-hit queries (1: blocked, 0: free), rtcOccluded1 on Embree's side.
+    virtual void occluded(std::span<const BenchSegment> rays, uint8_t* blocked, TraversalStats& stats) const = 0;
 
+    // Whether a build uses more than one thread when the process may use more than one CPU.
+    virtual bool buildsInParallel() const = 0;
     virtual bool countsWork() const = 0;
     virtual std::optional<double> sahCost() const = 0;
     // Memory of the built structure (without the input triangles), divided by the triangles.

@@ -94,4 +94,27 @@ void EmbreeSystem::trace(std::span<const BenchRay> rays, TraceResult* results, T
     stats.rays += rays.size();
 }
 
+void EmbreeSystem::occluded(std::span<const BenchSegment> rays, uint8_t* blocked, TraversalStats& stats) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    for (const BenchSegment& segment : rays) {
+        RTCRay query;
+        query.org_x = segment.origin.x;
+        query.org_y = segment.origin.y;
+        query.org_z = segment.origin.z;
+        query.tnear = 0.0f;
+        query.dir_x = segment.direction.x;
+        query.dir_y = segment.direction.y;
+        query.dir_z = segment.direction.z;
+        query.time = 0.0f;
+        query.tfar = segment.tMax;
+        query.mask = ~0u;
+        query.id = 0;
+        query.flags = 0;
+        rtcOccluded1(rtcScene_, &context, &query);
+        *blocked++ = query.tfar < 0.0f;  // Embree sets tfar to -inf when something blocks the ray
+    }
+    stats.rays += rays.size();
+}
+
 }  // namespace rtlab::bench

@@ -1,7 +1,7 @@
 // Embree 3 (Debian's libembree-dev) as the peer, set up exactly as in
 // docs/performance.md#embree-setup-and-mismatches: one triangle geometry with shared float3
 // vertex and uint3 index buffers, scene and geometry build quality MEDIUM or HIGH,
-// rtcIntersect1 per ray.
+// rtcIntersect1 (closest hit) or rtcOccluded1 (any hit) per ray.
 #pragma once
 
 #include "bench/bench_system.h"
@@ -25,6 +25,8 @@ public:
     std::string label() const override;
     double build(int threads) override;
     void trace(std::span<const BenchRay> rays, TraceResult* results, TraversalStats& stats) const override;
+    void occluded(std::span<const BenchSegment> rays, uint8_t* blocked, TraversalStats& stats) const override;
+    bool buildsInParallel() const override { return true; }
     bool countsWork() const override { return false; }
     std::optional<double> sahCost() const override { return std::nullopt; }
     double bytesPerTriangle() const override { return bytesPerTriangle_; }

@@ -4,6 +4,7 @@
 // are separate so that only they link Embree.
 #include "bench/bench_scenes.h"
 #include "bench/convergence.h"
+#include "bench/embree_race.h"
 #include "bench/parameter_sweep.h"
 #include "bench/reference_check.h"
 #include "bench/grid_report.h"
@@ -13,6 +14,7 @@
 #include "bench/report.h"
 #include "bench/structures_report.h"
 #include "bench/throughput.h"
+#include "framework/accel/accelerator_registry.h"
 #include "framework/core/error.h"
 
 #include <CLI/CLI.hpp>
@@ -36,6 +38,8 @@ struct Options {
     bool checkReferenceHits = false;
     std::string checkAccelerator = "bvh-buckets:12";
     bool skipThroughput = false;
+    bool skipRace = false;
+    RaceOptions race;
     bool skipConvergence = false;
     bool skipParameters = false;
     bool skipEstimators = false;
@@ -84,6 +88,16 @@ int runBench(const Options& options) {
             writeGridSweepSvg(outPath("grid-sweep.svg"), records);
             writeStructuresSvg(outPath("structures.svg"), records);
         }
+    }
+    if (!options.skipRace) {
+        RaceOptions race = options.race;
+        race.modelsDir = options.modelsDir;
+        if (!options.scenes.empty()) race.scenes = options.scenes;
+        if (options.quick) race = quickRace(race);
+        RaceResult result = runRace(race);
+        std::cout << "\n## The fast path against Embree, alternating" << (options.quick ? " (--quick)" : "") << "\n\n";
+        writeRaceMarkdown(std::cout, result);
+        if (!options.outDir.empty()) writeRaceCsv(outPath("race.csv"), result);
     }
     if (!options.skipConvergence) {
         ConvergenceOptions convergence;
@@ -159,6 +173,12 @@ int main(int argc, char** argv) {
                  "Only compare Embree's hits with the reference page and rtlab's with Embree's (exit 1 if off)");
     app.add_option("--check-accel", options.checkAccelerator, "The rtlab accelerator --check-reference compares");
     app.add_flag("--no-throughput", options.skipThroughput, "Skip the throughput table");
+    app.add_flag("--no-race", options.skipRace, "Skip the alternating race of the fast path against Embree (issue 26's targets)");
+    app.add_option("--rounds", options.race.rounds, "Rounds of that race (at least 5)")
+        ->check(CLI::Range(5, 1000))
+        ->capture_default_str();
+    app.add_option("--race-accel", options.race.accelerator,
+                   "The rtlab accelerator of the race (default: the fastest, " + defaultRenderAccelerator() + ")");
     app.add_flag("--no-convergence", options.skipConvergence, "Skip image error against samples per pixel");
     app.add_flag("--no-parameters", options.skipParameters, "Skip the bucket count / leaf size sweep");
     app.add_flag("--no-estimators", options.skipEstimators, "Skip the estimators of direct light (a6) against each other");

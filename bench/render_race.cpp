@@ -11,12 +11,13 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 
 namespace rtlab::bench {
 namespace {
 
-constexpr double kSpeedupTarget = 3.0;
+constexpr double kSpeedupTarget = 8.0;
 constexpr double kBeyondTracingTarget = 0.15;
 
 std::string format(const char* pattern, double value) {
@@ -53,16 +54,44 @@ RenderRaceResult runRenderRace(const RenderRaceOptions& options) {
     settings.width = settings.height = options.size;
     settings.threads = 1;  // POV-Ray's references render on one thread (+WT1)
     result.share = measureTraceShare(scene, camera, *accelerator, settings, options.repeats);
+
+    // The same image from the textbook BVH (AcceleratorSpec's default), compared bit for bit.
+    AcceleratorSpec textbookSpec;
+    result.textbookAccelerator = textbookSpec.name;
+    std::unique_ptr<Accelerator> textbook = makeAccelerator(textbookSpec);
+    textbook->build(primitives);
+    settings.progress = false;
+    Image fast = Renderer(scene, camera, *accelerator).render(settings).colour;
+    Image reference = Renderer(scene, camera, *textbook).render(settings).colour;
+    for (size_t i = 0; i < fast.pixels.size(); i += fast.channels)
+        result.differentPixels += std::memcmp(&fast.pixels[i], &reference.pixels[i], fast.channels * sizeof(float)) != 0;
     result.povrayVersion = povrayVersion();
+    // POV-Ray and our render take turns, so that a slow stretch of this shared machine slows
+    // both sides of a pair; the verdict is on the median of the pairs' ratios.
     result.povTraceSeconds = kInfinity;
-    for (int run = 0; run < options.repeats; ++run)
-        result.povTraceSeconds = std::min(result.povTraceSeconds, timePovReference(scene, camera, options.size, options.size));
+    Renderer renderer(scene, camera, *accelerator);
+    for (int run = 0; run < options.repeats; ++run) {
+        double pov = timePovReference(scene, camera, options.size, options.size);
+        double ours = renderer.render(settings).seconds;
+        result.povTraceSeconds = std::min(result.povTraceSeconds, pov);
+        result.pairSpeedups.push_back(pov / ours);
+    }
     std::cerr << "\n";
     return result;
 }
 
+double RenderRaceResult::pairedSpeedup() const {
+    std::vector<double> sorted = pairSpeedups;
+    std::sort(sorted.begin(), sorted.end());
+    size_t n = sorted.size();
+    return n == 0 ? 0.0 : n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+}
+
 void writeRenderRaceMarkdown(std::ostream& out, const RenderRaceResult& result) {
     const RenderRaceOptions& o = result.options;
+    auto [low, high] = result.pairSpeedups.empty() ? std::pair{0.0, 0.0}
+                                                   : std::pair{*std::min_element(result.pairSpeedups.begin(), result.pairSpeedups.end()),
+                                                               *std::max_element(result.pairSpeedups.begin(), result.pairSpeedups.end())};
     out << "Scene " << o.scene << " at " << o.size << "x" << o.size << ", one ray per pixel centre, one thread, best of "
         << o.repeats << "; load average " << result.loadAverage << ".\n\n"
         << "| renderer | seconds |\n|---|--:|\n"
@@ -72,13 +101,17 @@ void writeRenderRaceMarkdown(std::ostream& out, const RenderRaceResult& result) 
         << " |\n"
         << "| " << result.povrayVersion << " Trace Time (+WT1) | " << format("%.3f", result.povTraceSeconds) << " |\n\n"
         << "| target | measured | |\n|---|--:|:-:|\n"
-        << "| POV-Ray's time / ours ≥ " << format("%.0f", kSpeedupTarget) << " | " << format("%.2f", result.speedup()) << " | "
-        << verdict(result.speedup() >= kSpeedupTarget) << " |\n"
+        << "| POV-Ray's time / ours ≥ " << format("%.0f", kSpeedupTarget) << " (the median of " << result.pairSpeedups.size()
+        << " alternating pairs; min–max " << format("%.2f", low) << "–" << format("%.2f", high) << ") | "
+        << format("%.2f", result.pairedSpeedup()) << " | " << verdict(result.pairedSpeedup() >= kSpeedupTarget) << " |\n"
+        << "| the same from the best render and the best POV-Ray run | " << format("%.2f", result.speedup()) << " | |\n"
         << "| time beyond tracing ≤ " << format("%.0f", 100 * kBeyondTracingTarget) << " % (the median of the passes' own shares) | "
         << format("%.1f", 100 * result.share.pairedBeyondTracing()) << " % | "
         << verdict(result.share.pairedBeyondTracing() <= kBeyondTracingTarget) << " |\n"
         << "| the same from the best render and the best replay | " << format("%.1f", 100 * result.share.beyondTracing())
-        << " % | |\n";
+        << " % | |\n"
+        << "| the image of " << result.textbookAccelerator << " to the bit (pixels that differ) | "
+        << result.differentPixels << " | " << verdict(result.differentPixels == 0) << " |\n";
 }
 
 }  // namespace rtlab::bench

@@ -84,7 +84,7 @@ void writeMarkdown(std::ostream& out, const std::vector<ThroughputRecord>& recor
                 return optionalText(a->*member, [](double v) { return fixed(v, 1); }) + " / " +
                        optionalText(b->*member, [](double v) { return fixed(v, 1); });
             };
-            bool singleThreadedBuild = system.starts_with("rtlab:");
+            bool singleThreadedBuild = !p2->parallelBuild;
             out << "| " << system << (p1->note.empty() ? "" : " (" + p1->note + ")") << " | " << milliseconds(p1->buildMs) << " | "
                 << (singleThreadedBuild ? "(1T)" : milliseconds(p2->buildMs)) << " | "
                 << mrays(p1->mraysPerSecond) << " | " << mrays(i1->mraysPerSecond) << " | "
@@ -101,10 +101,10 @@ void writeMarkdown(std::ostream& out, const std::vector<ThroughputRecord>& recor
         }
     }
     out << "\nMrays/s: best pass, closest hit, one query per ray; 2T = total of two threads. rtlab's "
-           "builders are single-threaded, so their 2T build column repeats the 1T figure. Embree does not "
+           "builders are single-threaded (all but fastbvh), and their 2T build column shows (1T). Embree does not "
            "count work in its release build (–); the wide BVHs (bvh4, bvh8) count a wide node as one visit. "
            "Bytes per triangle: the built structure only (rtlab: the BVH's 32-byte nodes, the octree's 12-byte nodes, the KD-tree's 8-byte nodes, the grids' "
-           "4-byte cell offsets, + 4-byte indices; bvh4/bvh8: "
+           "4-byte cell offsets, + 4-byte indices; bvh4/bvh8/fastbvh: "
            "128/256-byte nodes and the triangles in leaf order, four to a 160-byte packet; Embree: what "
            "its memory monitor saw rtcCommitScene keep). "
            "References per triangle: the primitive ids the structure lists, per triangle (a triangle in "

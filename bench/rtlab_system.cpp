@@ -1,5 +1,7 @@
 #include "bench/rtlab_system.h"
 
+#include "framework/accel/accelerator_registry.h"
+
 #include <chrono>
 
 namespace rtlab::bench {
@@ -33,9 +35,26 @@ void RtlabSystem::trace(std::span<const BenchRay> rays, TraceResult* results, Tr
     }
 }
 
+void RtlabSystem::occluded(std::span<const BenchSegment> rays, uint8_t* blocked, TraversalStats& stats) const {
+    const Accelerator& accelerator = *accelerator_;
+    for (const BenchSegment& segment : rays) {
+        Ray ray;
+        ray.origin = segment.origin;
+        ray.direction = segment.direction;
+        ray.tMax = segment.tMax;
+        *blocked++ = accelerator.occluded(ray, stats);
+    }
+}
+
+bool RtlabSystem::buildsInParallel() const {
+    // The structures whose builders take threads say so with a `threads` option.
+    const AcceleratorType* type = findAcceleratorType(spec_.name.substr(0, spec_.name.find_first_of(":-")));
+    return type && type->option("threads");
+}
+
 std::optional<double> RtlabSystem::sahCost() const {
-    // The SAH cost of a tree: the BVHs (bvh, bvh4, bvh8) have one; brute force and grids do not.
-    if (!spec_.name.starts_with("bvh")) return std::nullopt;
+    // The SAH cost of a tree: the BVHs (bvh, bvh4, bvh8, fastbvh) have one; brute force and grids do not.
+    if (!spec_.name.starts_with("bvh") && !spec_.name.starts_with("fastbvh")) return std::nullopt;
     return rtlab::sahCost(accelerator_->structure());
 }
 

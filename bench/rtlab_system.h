@@ -18,6 +18,8 @@ public:
     std::string label() const override;
     double build(int threads) override;
     void trace(std::span<const BenchRay> rays, TraceResult* results, TraversalStats& stats) const override;
+    void occluded(std::span<const BenchSegment> rays, uint8_t* blocked, TraversalStats& stats) const override;
+    bool buildsInParallel() const override;
     bool countsWork() const override { return true; }
     std::optional<double> sahCost() const override;
     double bytesPerTriangle() const override;

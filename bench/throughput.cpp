@@ -117,8 +117,8 @@ std::vector<ThroughputRecord> runThroughput(const ThroughputOptions& options) {
             try {
                 std::cerr << "bench: " << sceneName << " " << label << ": building" << std::flush;
                 double build1 = medianBuildMs(*system, 1, repeats, /*pinToOneCpu=*/true);
-                // rtlab's builders are single-threaded: a 2T build is the same computation.
-                bool parallelBuild = label.starts_with("embree:");
+                // Most of rtlab's builders are single-threaded: a 2T build is the same computation.
+                bool parallelBuild = system->buildsInParallel();
                 double build2 = parallelBuild ? medianBuildMs(*system, 2, repeats, false) : build1;
                 system->build(2);
                 std::optional<double> references = system->referencesPerTriangle();
@@ -144,6 +144,7 @@ std::vector<ThroughputRecord> runThroughput(const ThroughputOptions& options) {
                         }
                         ThroughputRecord r = newRecord(set.kind, threads);
                         r.buildMs = threads == 1 ? build1 : build2;
+                        r.parallelBuild = parallelBuild;
                         r.mraysPerSecond = timing.bestMraysPerSecond;
                         r.ratioToEmbreeMedium = set.embreeMediumMrays[threads] > 0.0
                                                     ? timing.bestMraysPerSecond / set.embreeMediumMrays[threads]

@@ -31,6 +31,7 @@ struct ThroughputRecord {
     RayKind rays = RayKind::Primary;
     int threads = 1;
     double buildMs = 0.0;
+    bool parallelBuild = false;  // the 2T build ran on two threads (else it repeats the 1T figure)
     double mraysPerSecond = 0.0;
     double ratioToEmbreeMedium = 0.0;
     std::optional<double> sahCost;

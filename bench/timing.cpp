@@ -27,30 +27,21 @@ private:
     unsigned saved_;
 };
 
-// Pins the process (its calling thread; threads created later inherit it) to CPU 0.
-class PinToCpu0 {
-public:
-    PinToCpu0() {
-        pinned_ = sched_getaffinity(0, sizeof saved_, &saved_) == 0;
-        cpu_set_t one;
-        CPU_ZERO(&one);
-        CPU_SET(0, &one);
-        pinned_ = pinned_ && sched_setaffinity(0, sizeof one, &one) == 0;
-    }
-    ~PinToCpu0() {
-        if (pinned_) sched_setaffinity(0, sizeof saved_, &saved_);
-    }
-    PinToCpu0(const PinToCpu0&) = delete;
-    PinToCpu0& operator=(const PinToCpu0&) = delete;
+}  // namespace
 
-private:
-    cpu_set_t saved_;
-    bool pinned_ = false;
-};
+PinToCpu0::PinToCpu0() {
+    pinned_ = sched_getaffinity(0, sizeof saved_, &saved_) == 0;
+    cpu_set_t one;
+    CPU_ZERO(&one);
+    CPU_SET(0, &one);
+    pinned_ = pinned_ && sched_setaffinity(0, sizeof one, &one) == 0;
+}
 
-// One pass over all rays; returns its wall time in seconds.
-double tracePass(const BenchSystem& system, const std::vector<BenchRay>& rays, int threads,
-                 std::vector<TraceResult>& results, TraversalStats& stats) {
+PinToCpu0::~PinToCpu0() {
+    if (pinned_) sched_setaffinity(0, sizeof saved_, &saved_);
+}
+
+double timedPass(size_t queries, int threads, const ChunkWork& work, TraversalStats& stats) {
     std::atomic<size_t> next{0};
     std::vector<TraversalStats> threadStats(threads);
     auto worker = [&](int index) {
@@ -60,9 +51,8 @@ double tracePass(const BenchSystem& system, const std::vector<BenchRay>& rays, i
         TraversalStats mine;
         for (;;) {
             size_t begin = next.fetch_add(kRayChunk, std::memory_order_relaxed);
-            if (begin >= rays.size()) break;
-            size_t count = std::min(kRayChunk, rays.size() - begin);
-            system.trace(std::span(rays).subspan(begin, count), results.data() + begin, mine);
+            if (begin >= queries) break;
+            work(begin, std::min(kRayChunk, queries - begin), mine);
         }
         threadStats[index] = mine;
     };
@@ -77,6 +67,19 @@ double tracePass(const BenchSystem& system, const std::vector<BenchRay>& rays, i
     stats = TraversalStats{};
     for (const TraversalStats& s : threadStats) stats += s;
     return seconds;
+}
+
+namespace {
+
+// One pass of closest-hit queries over all rays; returns its wall time in seconds.
+double tracePass(const BenchSystem& system, const std::vector<BenchRay>& rays, int threads,
+                 std::vector<TraceResult>& results, TraversalStats& stats) {
+    return timedPass(
+        rays.size(), threads,
+        [&](size_t begin, size_t count, TraversalStats& mine) {
+            system.trace(std::span(rays).subspan(begin, count), results.data() + begin, mine);
+        },
+        stats);
 }
 
 }  // namespace

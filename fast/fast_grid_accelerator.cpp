@@ -44,7 +44,7 @@ public:
         const float tMax = hit ? hit->t : ray_.tMax;
         // Lanes left over from the previous packet hold triangles tested already: a degenerate
         // triangle in their place is never hit.
-        for (int lane = lanes_; lane < TrianglePacket::kLanes; ++lane) packet_.set(lane, kNoPrimitive, kNothing);
+        for (int lane = lanes_; lane < TrianglePacket::kLanes; ++lane) packet_.set(lane, kNoPrimitive, kNoTriangle);
         lanes_ = 0;
         if (!hit) return sheared_.anyHit(packet_, tMax);
         PacketHit nearest = sheared_.closest(packet_, tMax);
@@ -54,8 +54,6 @@ public:
     }
 
 private:
-    inline static const std::array<Vec3, 3> kNothing{Vec3(0.0f), Vec3(0.0f), Vec3(0.0f)};
-
     const PrimitiveSet& primitives_;
     const Ray& ray_;
     const ShearedRay sheared_;

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "fast/simd.h"
+#include "framework/accel/primitive_set.h"
 #include "framework/core/float_bits.h"
 #include "framework/core/ray.h"
 #include "framework/interface/a0_intersect.h"
@@ -17,24 +18,37 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <span>
 
 namespace rtlab {
 
-// The lane of a packet that holds no triangle.
+// The lane of a packet that holds no triangle, and the degenerate triangle it holds.
 inline constexpr uint32_t kNoPrimitive = 0xffffffffu;
+inline const std::array<Vec3, 3> kNoTriangle{Vec3(0.0f), Vec3(0.0f), Vec3(0.0f)};
 
+// No default initialiser: the wide BVH's packets are allocated uninitialised and filled on
+// several threads, each written once (fill); a gatherer sets every lane itself (set).
 struct alignas(16) TrianglePacket {
     static constexpr int kLanes = 4;
     // vertex[v][axis][lane]: coordinate `axis` of vertex v of the lane's triangle, so one row is
     // one SIMD load. A lane without a triangle has all three vertices at the origin: a
     // degenerate triangle, whose edge functions are all zero, so no ray hits it.
-    float vertex[3][3][kLanes] = {};
-    uint32_t prim[kLanes] = {kNoPrimitive, kNoPrimitive, kNoPrimitive, kNoPrimitive};
+    float vertex[3][3][kLanes];
+    uint32_t prim[kLanes];
 
     void set(int lane, uint32_t id, const std::array<Vec3, 3>& triangle) {
         prim[lane] = id;
         for (int v = 0; v < 3; ++v)
             for (int axis = 0; axis < 3; ++axis) vertex[v][axis][lane] = triangle[v][axis];
+    }
+
+    // Every lane: the primitives' triangles in order, then lanes with no triangle. A sphere keeps
+    // its id in a lane with no triangle; the traversal tests it on its own.
+    void fill(const PrimitiveSet& primitives, std::span<const uint32_t> prims) {
+        for (int lane = 0; lane < kLanes; ++lane) {
+            uint32_t id = lane < int(prims.size()) ? prims[lane] : kNoPrimitive;
+            set(lane, id, id < primitives.triangleCount() ? primitives.triangle(id) : kNoTriangle);
+        }
     }
 };
 

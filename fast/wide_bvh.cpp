@@ -19,18 +19,12 @@ public:
 
         auto index = static_cast<uint32_t>(wide_.nodes.size());
         wide_.nodes.emplace_back();
-        for (int slot = 0; slot < W; ++slot) setEmpty(index, slot);
+        for (int slot = 0; slot < W; ++slot) wide_.nodes[index].setEmpty(slot);
         for (int slot = 0; slot < count; ++slot) {
             const BvhNode& child = binary_.nodes[children[slot]];
             uint32_t ref = child.isLeaf() ? (kLeafFlag | child.offset) : emit(children[slot]);
             // emit() may have grown the vector: index the node anew, never keep a reference.
-            WideBvhNode<W>& node = wide_.nodes[index];
-            for (int axis = 0; axis < 3; ++axis) {
-                node.planes[WideBvhNode<W>::lowerRow(axis)][slot] = child.bounds.lower[axis];
-                node.planes[WideBvhNode<W>::upperRow(axis)][slot] = child.bounds.upper[axis];
-            }
-            node.child[slot] = ref;
-            node.primCount[slot] = child.primCount;
+            wide_.nodes[index].setChild(slot, child.bounds, ref, child.primCount);
         }
         return index;
     }
@@ -66,16 +60,6 @@ private:
         return count;
     }
 
-    void setEmpty(uint32_t index, int slot) {
-        WideBvhNode<W>& node = wide_.nodes[index];
-        for (int axis = 0; axis < 3; ++axis) {
-            node.planes[WideBvhNode<W>::lowerRow(axis)][slot] = kInfinity;
-            node.planes[WideBvhNode<W>::upperRow(axis)][slot] = -kInfinity;
-        }
-        node.child[slot] = kLeafFlag;
-        node.primCount[slot] = 0;
-    }
-
     const Bvh& binary_;
     WideBvh<W>& wide_;
 };
@@ -87,7 +71,7 @@ WideBvh<W> collapseToWide(const Bvh& binary) {
     WideBvh<W> wide;
     if (binary.nodes.empty()) return wide;
     wide.nodes.reserve(binary.nodes.size() / 2 + 1);  // about a third are needed; never regrows
-    wide.primIndices = binary.primIndices;
+    wide.primIndices.assign(binary.primIndices.begin(), binary.primIndices.end());
     Collapser<W>(binary, wide).emit(0);
     return wide;
 }

@@ -32,14 +32,24 @@ struct alignas(64) WideBvhNode {
 
     static constexpr int lowerRow(int axis) { return axis; }
     static constexpr int upperRow(int axis) { return 3 + axis; }
+
+    void setChild(int slot, const Bounds3f& box, uint32_t ref, uint32_t count) {
+        for (int axis = 0; axis < 3; ++axis) {
+            planes[lowerRow(axis)][slot] = box.lower[axis];
+            planes[upperRow(axis)][slot] = box.upper[axis];
+        }
+        child[slot] = ref;
+        primCount[slot] = count;
+    }
+    void setEmpty(int slot) { setChild(slot, Bounds3f{}, kLeafFlag, 0); }
 };
 static_assert(sizeof(WideBvhNode<4>) == 128 && sizeof(WideBvhNode<8>) == 256,
               "a wide node is meant to fill two (W = 4) or four (W = 8) cache lines");
 
 template <int W>
 struct WideBvh {
-    std::vector<WideBvhNode<W>, HugePageAllocator<WideBvhNode<W>>> nodes;  // [0] is the root, depth first
-    std::vector<uint32_t> primIndices;  // ids in leaf order (the binary tree's)
+    HugePageVector<WideBvhNode<W>> nodes;  // [0] is the root
+    HugePageVector<uint32_t> primIndices;  // ids in leaf order
 };
 
 // Folds a binary BVH into a W-wide one. A node's children are found by repeatedly opening the

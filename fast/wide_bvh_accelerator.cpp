@@ -1,10 +1,12 @@
 #include "fast/wide_bvh_accelerator.h"
 
 #include "fast/simd.h"
-#include "framework/accel/bvh_accelerator.h"
+#include "fast/task_pool.h"
 #include "framework/core/float_bits.h"
 #include "framework/interface/a1_bvh.h"
 
+#include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cstring>
 
@@ -70,6 +72,9 @@ ChildHits<W> intersectChildren(const WideBvhNode<W>& node, const WideRay<W>& ray
     return {tNear, tNear <= tFar};
 }
 
+// Trees over fewer primitives are packed on one thread: starting threads would cost more.
+constexpr uint32_t kParallelPacking = 16384;
+
 // How many packets a leaf of primCount primitives fills.
 uint32_t packetCount(uint32_t primCount) {
     return (primCount + TrianglePacket::kLanes - 1) / TrianglePacket::kLanes;
@@ -127,29 +132,40 @@ template <int W>
 void WideBvhAccelerator<W>::build(const PrimitiveSet& primitives) {
     primitives_ = &primitives;
     hasSpheres_ = primitives.triangleCount() < primitives.size();
-    std::vector<BuildPrimitive> prims = buildPrimitivesOf(primitives);
-    WideBvh<W> wide = prims.empty() ? WideBvh<W>{} : collapseToWide<W>(buildBvh(std::move(prims), options_));
+    WideBvh<W> wide = primitives.size() == 0 ? WideBvh<W>{} : makeTree_(primitives);
 
-    // Each leaf's primitives go into packets of four, in the order the nodes are stored (depth
-    // first), so a leaf reads consecutive memory. A sphere takes a lane with no triangle and is
-    // tested on its own.
+    // Each leaf's primitives go into packets of four, a node's leaves one after the other in the
+    // order the nodes are stored, so a leaf reads consecutive memory. A sphere takes a lane with
+    // no triangle and is tested on its own. The packets of each node are counted first, so the
+    // nodes can be filled on several threads, each packet written once.
+    std::vector<uint32_t> firstPacket(wide.nodes.size() + 1, 0);
+    for (size_t i = 0; i < wide.nodes.size(); ++i) {
+        uint32_t count = 0;
+        for (int slot = 0; slot < W; ++slot)
+            if (wide.nodes[i].child[slot] & kLeafFlag) count += packetCount(wide.nodes[i].primCount[slot]);
+        firstPacket[i + 1] = firstPacket[i] + count;
+    }
     packets_.clear();
-    for (WideBvhNode<W>& node : wide.nodes) {
-        for (int slot = 0; slot < W; ++slot) {
-            if (!(node.child[slot] & kLeafFlag) || node.primCount[slot] == 0) continue;
-            uint32_t firstEntry = node.child[slot] & ~kLeafFlag;
-            node.child[slot] = kLeafFlag | static_cast<uint32_t>(packets_.size());
-            for (uint32_t i = 0; i < node.primCount[slot]; ++i) {
-                int lane = i % TrianglePacket::kLanes;
-                if (lane == 0) packets_.emplace_back();
-                uint32_t prim = wide.primIndices[firstEntry + i];
-                if (prim < primitives.triangleCount())
-                    packets_.back().set(lane, prim, primitives.triangle(prim));
-                else
-                    packets_.back().prim[lane] = prim;
+    packets_.resize(firstPacket.back());
+    auto fill = [&](size_t firstNode, size_t lastNode) {
+        for (size_t i = firstNode; i < lastNode; ++i) {
+            WideBvhNode<W>& node = wide.nodes[i];
+            uint32_t packet = firstPacket[i];
+            for (int slot = 0; slot < W; ++slot) {
+                if (!(node.child[slot] & kLeafFlag) || node.primCount[slot] == 0) continue;
+                const uint32_t* prims = wide.primIndices.data() + (node.child[slot] & ~kLeafFlag);
+                node.child[slot] = kLeafFlag | packet;
+                for (uint32_t begin = 0; begin < node.primCount[slot]; begin += TrianglePacket::kLanes)
+                    packets_[packet++].fill(primitives, std::span(prims + begin, std::min<uint32_t>(TrianglePacket::kLanes, node.primCount[slot] - begin)));
             }
         }
-    }
+    };
+    TaskPool pool(primitives.size() >= kParallelPacking ? packingThreads_ : 1);
+    std::atomic<int> pending{0};
+    size_t chunk = std::max<size_t>(1, wide.nodes.size() / (4 * size_t(pool.threads())));
+    for (size_t first = 0; first < wide.nodes.size(); first += chunk)
+        pool.run([&fill, first, chunk, &wide] { fill(first, std::min(first + chunk, wide.nodes.size())); }, pending);
+    pool.waitFor(pending);
     nodes_ = std::move(wide.nodes);
 }
 
@@ -224,33 +240,45 @@ template <bool kSpheres>
 bool WideBvhAccelerator<W>::anyHit(const Ray& ray, TraversalStats& stats) const {
     const WideRay<W> wideRay(ray);
     const ShearedRay shearedRay(ray);
+    uint64_t nodeVisits = 0, primitiveTests = 0;
+    bool blocked = false;
+    // Any blocker will do, so the children a ray hits are not sorted: the first is visited next,
+    // the others wait in slot order, and no entry distance is kept.
     StackEntry stack[kStackSize<W>];
     int stackSize = 0;
-    stack[stackSize++] = StackEntry{0, 0, ray.tMin};
-    while (stackSize > 0) {
-        StackEntry current = stack[--stackSize];
+    StackEntry current{0, 0, 0.0f};
+    for (;;) {
         if (!(current.ref & kLeafFlag)) {
             const WideBvhNode<W>& node = nodes_[current.ref];
-            ++stats.nodeVisits;
+            ++nodeVisits;
             ChildHits<W> hits = intersectChildren<W>(node, wideRay, ray.tMax);
             if (unsigned mask = laneBits<W>(hits.hit); mask != 0) {
-                StackEntry nearest = nearestChild<W>(node, hits, mask, stack, stackSize);
-                stack[stackSize++] = nearest;
+                int slot = std::countr_zero(mask);
+                current = StackEntry{node.child[slot], node.primCount[slot], 0.0f};
+                for (mask &= mask - 1; mask != 0; mask &= mask - 1) {
+                    slot = std::countr_zero(mask);
+                    stack[stackSize++] = StackEntry{node.child[slot], node.primCount[slot], 0.0f};
+                }
+                continue;
             }
-            continue;
-        }
-        uint32_t first = current.ref & ~kLeafFlag;
-        stats.primitiveTests += current.primCount;
-        for (uint32_t p = first; p < first + packetCount(current.primCount); ++p) {
-            if (shearedRay.anyHit(packets_[p], ray.tMax)) return true;  // any blocker will do
-            if constexpr (kSpheres) {
-                Hit hit;
-                hit.t = ray.tMax;
-                if (intersectSpheres(packets_[p], ray, hit)) return true;
+        } else {
+            uint32_t first = current.ref & ~kLeafFlag;
+            primitiveTests += current.primCount;
+            for (uint32_t p = first; p < first + packetCount(current.primCount) && !blocked; ++p) {
+                blocked = shearedRay.anyHit(packets_[p], ray.tMax);
+                if constexpr (kSpheres) {
+                    Hit hit;
+                    hit.t = ray.tMax;
+                    blocked = blocked || intersectSpheres(packets_[p], ray, hit);
+                }
             }
         }
+        if (blocked || stackSize == 0) break;
+        current = stack[--stackSize];
     }
-    return false;
+    stats.nodeVisits += nodeVisits;
+    stats.primitiveTests += primitiveTests;
+    return blocked;
 }
 
 template <int W>

@@ -1,24 +1,37 @@
-// The wide BVH as an accelerator (--accel bvh4-sah, bvh8-buckets:12, ...): builds the binary
-// BVH with assignment a1/a2's buildBvh, folds it W-wide (wide_bvh.h) and traverses it with a
-// W-wide slab test and the watertight triangle test on four triangles at once (triangle_packet.h).
+// The wide BVH as an accelerator: a W-wide tree (wide_bvh.h) traversed with a W-wide slab test
+// and the watertight triangle test on four triangles at once (triangle_packet.h). The tree
+// comes from one of two builders:
+//  * the student's (or the reference) binary tree of a1/a2, folded W-wide (--accel bvh4-sah,
+//    bvh8-buckets:12, ...; wide_bvh_layouts.cpp): what the same tree gains from layout and SIMD
+//    alone;
+//  * fast/'s own builder (--accel fastbvh; wide_bvh_builder.h, fast_bvh.cpp), which prices
+//    leaves by the packets they fill and builds on every thread.
 //
-// This is the fast path the benchmarks put next to Embree (registered as a BVH layout by
-// wide_bvh_layouts.cpp). It shows what the same tree gains from layout and SIMD alone; the
-// student's own traversal is the binary one (BvhAccelerator). The SIMD code is written with GCC's vector extensions, so it compiles
-// for any target: W = 4 fills an SSE or NEON register, W = 8 an AVX register (with -mavx or
-// -march=native; without, the compiler splits it into two 4-wide halves).
+// These are the fast paths the benchmarks put next to Embree; the student's own traversal is the
+// binary one (BvhAccelerator). The SIMD code is written with GCC's vector extensions, so it
+// compiles for any target: W = 4 fills an SSE or NEON register, W = 8 an AVX register (with
+// -mavx or -march=native; without, the compiler splits it into two 4-wide halves).
 #pragma once
 
+#include "fast/task_pool.h"
 #include "fast/triangle_packet.h"
 #include "fast/wide_bvh.h"
 #include "framework/accel/accelerator.h"
+
+#include <functional>
 
 namespace rtlab {
 
 template <int W>
 class WideBvhAccelerator final : public Accelerator {
 public:
-    explicit WideBvhAccelerator(const BvhOptions& options) : options_(options) {}
+    // Makes the wide tree over a primitive set (never called for an empty one).
+    using TreeBuilder = std::function<WideBvh<W>(const PrimitiveSet&)>;
+
+    // packingThreads: how many threads copy the triangles into the leaves' packets (0: every CPU
+    // the process may use).
+    WideBvhAccelerator(TreeBuilder makeTree, int packingThreads)
+        : makeTree_(std::move(makeTree)), packingThreads_(packingThreads > 0 ? packingThreads : availableCpus()) {}
 
     void build(const PrimitiveSet& primitives) override;
     // Node visits count wide nodes (W box tests each).
@@ -38,13 +51,14 @@ private:
     // true when one is hit.
     bool intersectSpheres(const TrianglePacket& packet, const Ray& ray, Hit& hit) const;
 
-    BvhOptions options_;
+    TreeBuilder makeTree_;
+    int packingThreads_;
     const PrimitiveSet* primitives_ = nullptr;
     bool hasSpheres_ = false;
     // The wide tree; a leaf child refers to its first packet (kLeafFlag | packet index), and
     // its primCount primitives fill that packet and the next ones, four to a packet.
-    std::vector<WideBvhNode<W>, HugePageAllocator<WideBvhNode<W>>> nodes_;
-    std::vector<TrianglePacket, HugePageAllocator<TrianglePacket>> packets_;
+    HugePageVector<WideBvhNode<W>> nodes_;
+    HugePageVector<TrianglePacket> packets_;
 };
 
 }  // namespace rtlab

@@ -4,6 +4,7 @@
 #include "fast/wide_bvh_accelerator.h"
 #include "framework/accel/accelerator_registry.h"
 #include "framework/accel/bvh_accelerator.h"
+#include "framework/interface/a1_bvh.h"
 
 namespace rtlab {
 namespace {
@@ -11,7 +12,14 @@ namespace {
 template <int W>
 AcceleratorType wideBvhType(const char* name, const char* description, int speedRank) {
     return {name, description, bvhTreeOptions(),
-            [](const AcceleratorParameters& p) { return std::make_unique<WideBvhAccelerator<W>>(bvhOptionsFrom(p)); },
+            [](const AcceleratorParameters& p) {
+                // The student's tree is built on one thread, and so are its packets.
+                return std::make_unique<WideBvhAccelerator<W>>(
+                    [options = bvhOptionsFrom(p)](const PrimitiveSet& prims) {
+                        return collapseToWide<W>(buildBvh(buildPrimitivesOf(prims), options));
+                    },
+                    1);
+            },
             {std::string(name) + "-sah", std::string(name) + "-buckets:12"}, speedRank};
 }
 

@@ -315,6 +315,14 @@ std::vector<AcceleratorCase> allAccelerators() {
             spec.maxLeaf = maxLeaf;
             cases.push_back({spec});
         }
+    // fast/'s own wide tree; its largest leaf is named, since its default is not the spec's.
+    for (const char* name : {"fastbvh:width=4", "fastbvh:width=8", "fastbvh:width=8,bins=2"})
+        for (int maxLeaf : {1, 4, 8}) {
+            AcceleratorSpec spec;
+            spec.name = std::string(name) + ",leaf=" + std::to_string(maxLeaf);
+            spec.maxLeaf = maxLeaf;
+            cases.push_back({spec});
+        }
     return cases;
 }
 
@@ -392,7 +400,8 @@ BvhOptions optionsOf(const AcceleratorSpec& spec) {
 }
 
 // Builds every accelerator over the scene and compares every ray with the oracle; shadow rays
-// must agree with brute force, which uses the same float primitive tests.
+// must agree with brute force, which uses the same float primitive tests, and with the
+// accelerator's own closest hit.
 void checkAllAccelerators(const Scene& scene, RaySet& set,
                           const std::vector<AcceleratorCase>& accelerators = allAccelerators()) {
     computeExpected(set, scene);
@@ -413,7 +422,7 @@ void checkAllAccelerators(const Scene& scene, RaySet& set,
         if (c.spec.name != "brute")
             checkStructure(accel->structure(), prims, optionsOf(c.spec), !c.spec.name.starts_with("bvh-"));
         TraversalStats stats;
-        int wrong = 0, leaks = 0, shadowMismatches = 0;
+        int wrong = 0, leaks = 0, shadowMismatches = 0, anyHitDisagreements = 0;
         std::string firstProblem;
         for (size_t i = 0; i < set.rays.size(); ++i) {
             Hit hit = accel->intersect(set.rays[i], stats);
@@ -423,12 +432,15 @@ void checkAllAccelerators(const Scene& scene, RaySet& set,
                 if (firstProblem.empty()) firstProblem = "ray " + std::to_string(i) + ": " + problem;
             }
             if (set.mustHit[i] && !hit.found()) ++leaks;
-            if (accel->occluded(set.rays[i], stats) != bool(bruteOccluded[i])) ++shadowMismatches;
+            bool blocked = accel->occluded(set.rays[i], stats);
+            shadowMismatches += blocked != bool(bruteOccluded[i]);
+            anyHitDisagreements += blocked != hit.found();
         }
         CAPTURE(firstProblem);
         CHECK(wrong == 0);
         CHECK(leaks == 0);
         CHECK(shadowMismatches == 0);
+        CHECK(anyHitDisagreements == 0);
     }
 }
 

@@ -14,11 +14,11 @@ struct ParsedName {
 };
 
 // True for the name of a structure of fast/, which this executable may have been linked
-// without: a wide BVH ("bvh" and a width, e.g. "bvh4") or the tuned grid.
+// without: a wide BVH ("bvh" and a width, e.g. "bvh4", or fastbvh) or the tuned grid.
 bool isFastPathName(std::string_view name) {
     bool wideBvh = name.size() > 3 && name.starts_with("bvh") &&
                    std::all_of(name.begin() + 3, name.end(), [](char c) { return c >= '0' && c <= '9'; });
-    return wideBvh || name == "fastgrid";
+    return wideBvh || name == "fastbvh" || name == "fastgrid";
 }
 
 ParsedName parseName(const std::string& name) {

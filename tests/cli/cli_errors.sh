@@ -46,6 +46,8 @@ run 1 "a wide BVH in the student binary" "$student" render "$scene" -o "$work/x.
 one_line "only into rtlab-solution" "a wide BVH in the student binary"
 run 1 "the tuned grid in the student binary" "$student" render "$scene" -o "$work/x.png" --accel fastgrid
 one_line "fastgrid is a fast path of fast/" "the tuned grid in the student binary"
+run 1 "the fast BVH in the student binary" "$student" render "$scene" -o "$work/x.png" --accel fastbvh:width=4
+one_line "fastbvh is a fast path of fast/" "the fast BVH in the student binary"
 run 1 "an option value out of its range" "$solution" render "$scene" -o "$work/x.png" --accel grid:C=0
 one_line "C must be a number in 1..1000" "an option value out of its range"
 run 1 "an option the structure does not have" "$solution" render "$scene" -o "$work/x.png" --accel grid:B=12
@@ -55,6 +57,7 @@ grep -q "bvh4" "$work/stdout" && fail "rtlab render --help offers bvh4"
 run 0 "rtlab-solution render --help" "$solution" render --help
 grep -q "bvh4:" "$work/stdout" || fail "rtlab-solution render --help lacks bvh4"
 grep -q "fastgrid:" "$work/stdout" || fail "rtlab-solution render --help lacks fastgrid"
+grep -q "fastbvh:" "$work/stdout" || fail "rtlab-solution render --help lacks fastbvh"
 
 release_dir=$work/release-into
 mkdir "$release_dir"
