@@ -5,7 +5,7 @@
 // traces. The same run measures how much of our render is spent beyond tracing.
 #pragma once
 
-#include "framework/render/trace_share.h"
+#include "framework/verification/trace_share.h"
 
 #include <ostream>
 #include <string>
