@@ -6,7 +6,7 @@
 #include "framework/accel/accelerator.h"
 #include "framework/accel/primitive_set.h"
 #include "framework/core/error.h"
-#include "framework/render/image_compare.h"
+#include "framework/verification/image_compare.h"
 #include "framework/render/renderer.h"
 #include "framework/scene/benchmark_rays.h"
 #include "framework/scene/emitters.h"

@@ -6,7 +6,7 @@
 // the image is the textbook structure's (the a1/a2 reference BVH's) to the bit.
 #pragma once
 
-#include "framework/render/trace_share.h"
+#include "framework/verification/trace_share.h"
 
 #include <ostream>
 #include <string>

@@ -5,9 +5,9 @@
 #include "cli/statistical_report.h"
 #include "framework/accel/accelerator.h"
 #include "framework/blender/blender_reference.h"
-#include "framework/render/edge_pixels.h"
+#include "framework/verification/edge_pixels.h"
 #include "framework/render/image_io.h"
-#include "framework/render/replicates.h"
+#include "framework/verification/replicates.h"
 
 #include <chrono>
 #include <iostream>

@@ -1,15 +1,15 @@
 // rtlab compare A B [--diff heat.png] [--threshold CODES] [--max-mean CODES] [--max-max CODES]
-// [--max-share FRACTION]: two images through OpenImageIO (framework/render/image_compare.h).
+// [--max-share FRACTION]: two images through OpenImageIO (framework/verification/image_compare.h).
 // Errors are printed in image units and in 16-bit codes; the exit status is 1 when a
 // tolerance given on the command line is exceeded.
 // rtlab compare --blender REF.exr --scene SCENE [--replicates K] [--seed S] [--light-sampling M]:
 // our renders of SCENE against a Blender Cycles reference, statistically
-// (framework/render/statistical_comparison.h); exit status 1 when they do not agree.
+// (framework/verification/statistical_comparison.h); exit status 1 when they do not agree.
 #include "cli/commands.h"
 #include "cli/reference_renderer.h"
 #include "cli/statistical_report.h"
 #include "framework/core/error.h"
-#include "framework/render/image_compare.h"
+#include "framework/verification/image_compare.h"
 #include "framework/render/image_io.h"
 #include "framework/scene/gltf_loader.h"
 

@@ -6,7 +6,7 @@
 #include "framework/pov/pov_exporter.h"
 #include "framework/pov/pov_reference.h"
 #include "framework/pov/povray_process.h"
-#include "framework/render/image_compare.h"
+#include "framework/verification/image_compare.h"
 #include "framework/render/image_io.h"
 #include "framework/render/renderer.h"
 

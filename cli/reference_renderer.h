@@ -5,7 +5,7 @@
 #pragma once
 
 #include "framework/render/light_sampling.h"
-#include "framework/render/statistical_comparison.h"
+#include "framework/verification/statistical_comparison.h"
 #include "framework/scene/scene.h"
 
 #include <cstdint>

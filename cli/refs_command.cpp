@@ -15,7 +15,7 @@
 #include "framework/external/reference_manifest.h"
 #include "framework/external/temporary_directory.h"
 #include "framework/pov/pov_trace.h"
-#include "framework/render/image_compare.h"
+#include "framework/verification/image_compare.h"
 #include "framework/render/image_io.h"
 #include "framework/scene/gltf_loader.h"
 

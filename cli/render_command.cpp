@@ -9,7 +9,7 @@
 #include "framework/core/error.h"
 #include "framework/render/image_io.h"
 #include "framework/render/renderer.h"
-#include "framework/render/trace_share.h"
+#include "framework/verification/trace_share.h"
 #include "framework/render/tiles.h"
 #include "framework/scene/gltf_loader.h"
 

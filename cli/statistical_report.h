@@ -1,8 +1,8 @@
 // How `rtlab compare --blender` and `rtlab refs --blender --parity` print a statistical
-// comparison (framework/render/statistical_comparison.h).
+// comparison (framework/verification/statistical_comparison.h).
 #pragma once
 
-#include "framework/render/statistical_comparison.h"
+#include "framework/verification/statistical_comparison.h"
 
 #include <iosfwd>
 #include <string>

@@ -185,7 +185,7 @@ TEST_CASE("the grid's cells hold exactly the primitives whose boxes overlap them
         for (double c : {1.0, 27.0, 81.0}) {
             GridOptions options;
             options.cellsPerPrimitive = c;
-            GridAccelerator accelerator(options, false);
+            GridAccelerator accelerator(options, GridInsertion::Box);
             accelerator.build(primitives);
             const UniformGrid& grid = accelerator.grid();
             REQUIRE(grid.cellStart.size() == grid.cellCount() + 1);
@@ -218,7 +218,7 @@ TEST_CASE("with exact insertion, a grid cell keeps the triangles of its box rang
     for (NamedScene& named : scenes()) {
         CAPTURE(named.name);
         PrimitiveSet primitives(named.scene);
-        GridAccelerator boxes(GridOptions{}, false), exact(GridOptions{}, true);
+        GridAccelerator boxes(GridOptions{}, GridInsertion::Box), exact(GridOptions{}, GridInsertion::Exact);
         boxes.build(primitives);
         exact.build(primitives);
         const UniformGrid &all = boxes.grid(), &kept = exact.grid();

@@ -1,7 +1,7 @@
-// Image comparison through OpenImageIO (framework/render/image_compare.h) and `rtlab compare`,
+// Image comparison through OpenImageIO (framework/verification/image_compare.h) and `rtlab compare`,
 // on 16-bit PNGs with known differences in codes.
 #include "framework/core/error.h"
-#include "framework/render/image_compare.h"
+#include "framework/verification/image_compare.h"
 #include "framework/render/image_io.h"
 #include "tests/cli_runner.h"
 #include "tests/output_dirs.h"

@@ -5,7 +5,7 @@
 #include "framework/core/error.h"
 #include "framework/core/pcg32.h"
 #include "framework/render/renderer.h"
-#include "framework/render/trace_share.h"
+#include "framework/verification/trace_share.h"
 #include "framework/scene/icosphere_mesh.h"
 
 #include <doctest/doctest.h>

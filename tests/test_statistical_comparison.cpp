@@ -1,12 +1,12 @@
 // The statistical comparison of replicated renders with a near-exact reference
-// (framework/render/statistical_comparison.h) on images whose statistics are known by hand, and
-// the edge pixels it leaves out (framework/render/edge_pixels.h) on a scene whose edge is
+// (framework/verification/statistical_comparison.h) on images whose statistics are known by hand, and
+// the edge pixels it leaves out (framework/verification/edge_pixels.h) on a scene whose edge is
 // placed inside one pixel column.
 #include "framework/accel/accelerator.h"
 #include "framework/core/error.h"
-#include "framework/render/edge_pixels.h"
-#include "framework/render/replicates.h"
-#include "framework/render/statistical_comparison.h"
+#include "framework/verification/edge_pixels.h"
+#include "framework/verification/replicates.h"
+#include "framework/verification/statistical_comparison.h"
 
 #include <doctest/doctest.h>
 

@@ -7,7 +7,7 @@
 #include "cli/render_accelerator.h"
 #include "framework/core/error.h"
 #include "framework/core/ray_file.h"
-#include "framework/render/image_compare.h"
+#include "framework/verification/image_compare.h"
 #include "framework/render/image_io.h"
 #include "framework/scene/gltf_loader.h"
 #include "grader/engine/grading_report.h"

@@ -9,7 +9,7 @@
 #include "framework/external/external_process.h"
 #include "framework/oracle/oracle.h"
 #include "framework/render/aov.h"
-#include "framework/render/image_compare.h"
+#include "framework/verification/image_compare.h"
 #include "framework/render/image_io.h"
 #include "framework/render/renderer.h"
 #include "framework/render/spawn_ray.h"

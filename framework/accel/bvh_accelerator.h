@@ -1,16 +1,14 @@
-// Wraps the BVH of assignments a1/a2 in the Accelerator interface: building runs buildBvh
-// with the chosen split method, queries run the ordered (or, on request, the recursive)
-// traversal.
+// Wraps the BVH of assignments a1/a2 in the Accelerator interface through its adapter
+// (bvh_adapter.h): building runs buildBvh with the chosen split method, queries run the ordered
+// (or, on request, the recursive) traversal.
 #pragma once
 
 #include "framework/accel/accelerator.h"
 #include "framework/accel/accelerator_registry.h"
+#include "framework/accel/bvh_adapter.h"
 #include "framework/interface/bvh.h"
 
 namespace rtlab {
-
-// What buildBvh needs to know of each primitive: bounds, centroid and id, in id order.
-std::vector<BuildPrimitive> buildPrimitivesOf(const PrimitiveSet& primitives);
 
 // A BVH as the grader's StructureView: its nodes in order, children {first, second}.
 StructureView bvhStructureView(const Bvh& bvh);

@@ -3,7 +3,7 @@
 // reference and the difference heat map side by side. Self-contained: images are copied
 // next to index.html.
 #include "framework/core/error.h"
-#include "framework/render/image_compare.h"
+#include "framework/verification/image_compare.h"
 #include "grader/engine/grading_report.h"
 #include "grader/engine/markup_escape.h"
 
@@ -33,7 +33,7 @@ pre{background:#f6f6f6;padding:8px;white-space:pre-wrap;font-size:90%}
 .images{display:flex;gap:12px;flex-wrap:wrap}.images figure{margin:0}.images img{max-width:440px;image-rendering:pixelated}
 )";
 
-// The heat map's colours as swatches with the error each means (framework/render/image_compare.h).
+// The heat map's colours as swatches with the error each means (framework/verification/image_compare.h).
 std::string heatMapLegend() {
     auto swatch = [](const float rgb[3], const std::string& meaning) {
         char colour[8];

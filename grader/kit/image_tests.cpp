@@ -4,7 +4,7 @@
 // older than the scene, scores 0 with that reason, never a silent pass.
 #include "framework/core/error.h"
 #include "framework/core/sha256.h"
-#include "framework/render/image_compare.h"
+#include "framework/verification/image_compare.h"
 #include "framework/render/image_io.h"
 #include "framework/scene/gltf_loader.h"
 #include "grader/kit/image_tests.h"

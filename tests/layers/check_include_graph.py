@@ -4,7 +4,7 @@ know each other do not.
 
 Every #include "a/b/c.h" in a tracked .cpp or .h file is an edge from the including file's
 layer to the included file's layer. Layers are framework/<part> (core, interface, scene, accel,
-oracle, sampling, render, external, pov, blender); the grader's engine, kit, wire and worker,
+oracle, sampling, render, verification, external, pov, blender); the grader's engine, kit, wire and worker,
 each assignment's folder and its worker/, and grader/ itself (the registry); viewer, cli, fast,
 bench, fuzz, assignments, solutions and tests. ALLOWED lists, for each layer, the layers it may include
 besides itself; any other edge is printed as FILE:LINE and fails the test, and so does a file
@@ -23,8 +23,8 @@ import re
 import subprocess
 import sys
 
-FRAMEWORK = {"framework/" + p for p in ("core", "interface", "scene", "accel", "oracle", "sampling", "render", "external",
-                                        "pov", "blender")}
+FRAMEWORK = {"framework/" + p for p in ("core", "interface", "scene", "accel", "oracle", "sampling", "render", "verification",
+                                        "external", "pov", "blender")}
 
 ALLOWED = {
     "framework/core": set(),
@@ -37,6 +37,10 @@ ALLOWED = {
     "framework/sampling": {"framework/core"},
     "framework/render": {"framework/core", "framework/interface", "framework/scene", "framework/accel", "framework/oracle",
                          "framework/sampling"},
+    # Checking renders apart from making them: image and statistical comparison, replicated
+    # renders, the pixels an edge crosses, the share of a render spent tracing.
+    "framework/verification": {"framework/core", "framework/interface", "framework/scene", "framework/accel",
+                               "framework/render"},
     # Running the reference renderers (a time limit, a scratch folder) and the manifest of their inputs.
     "framework/external": {"framework/core"},
     "framework/pov": {"framework/core", "framework/scene", "framework/oracle", "framework/render", "framework/external"},

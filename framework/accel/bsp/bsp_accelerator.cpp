@@ -1,27 +1,27 @@
 #include "framework/accel/bsp/bsp_accelerator.h"
 
 #include "framework/accel/accelerator_registry.h"
-#include "framework/interface/a5_kdtree.h"
+#include "framework/accel/bsp/bsp_adapter.h"
 
 namespace rtlab {
 
 void BspAccelerator::build(const PrimitiveSet& primitives) {
     primitives_ = &primitives;
-    tree_ = buildBspAutopartition(primitives.allTriangles(), primitives.allBounds(), options_);
+    tree_ = BspAdapter::build(primitives, options_);
 }
 
 Hit BspAccelerator::intersect(const Ray& ray, TraversalStats& stats) const {
     Hit hit;
     hit.t = ray.tMax;
     Traversal traversal(*primitives_, ray, stats);
-    intersectBsp(tree_, traversal, hit);
+    BspAdapter::intersect(tree_, traversal, hit);
     if (!hit.found()) hit.t = kInfinity;
     return hit;
 }
 
 bool BspAccelerator::occluded(const Ray& ray, TraversalStats& stats) const {
     Traversal traversal(*primitives_, ray, stats);
-    return occludedBsp(tree_, traversal);
+    return BspAdapter::occluded(tree_, traversal);
 }
 
 StructureView BspAccelerator::structure() const { return bspStructureView(tree_); }

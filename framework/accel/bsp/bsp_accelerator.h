@@ -1,4 +1,5 @@
-// Wraps a5's optional BSP autopartition in the Accelerator interface (docs/bsp.md).
+// Wraps a5's optional BSP autopartition in the Accelerator interface through its adapter
+// (bsp_adapter.h; docs/bsp.md).
 #pragma once
 
 #include "framework/accel/accelerator.h"

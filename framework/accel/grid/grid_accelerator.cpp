@@ -1,31 +1,28 @@
 #include "framework/accel/grid/grid_accelerator.h"
 
 #include "framework/accel/accelerator_registry.h"
-#include "framework/accel/grid/grid_exact_insertion.h"
+#include "framework/accel/grid/grid_adapter.h"
 #include "framework/accel/grid/grid_structure_view.h"
-#include "framework/interface/a3_grid.h"
 
 namespace rtlab {
 
 void GridAccelerator::build(const PrimitiveSet& primitives) {
     primitives_ = &primitives;
-    grid_ = gridFrame(primitives.allBounds(), options_);
-    fillGridCells(grid_, primitives.allBounds());
-    if (exactInsertion_) keepOverlappingTriangles(grid_, primitives);
+    grid_ = GridAdapter::build(primitives, options_, insertion_);
 }
 
 Hit GridAccelerator::intersect(const Ray& ray, TraversalStats& stats) const {
     Hit hit;
     hit.t = ray.tMax;
     Traversal traversal(*primitives_, ray, stats);
-    intersectGrid(grid_, traversal, hit);
+    GridAdapter::intersect(grid_, traversal, hit);
     if (!hit.found()) hit.t = kInfinity;
     return hit;
 }
 
 bool GridAccelerator::occluded(const Ray& ray, TraversalStats& stats) const {
     Traversal traversal(*primitives_, ray, stats);
-    return occludedGrid(grid_, traversal);
+    return GridAdapter::occluded(grid_, traversal);
 }
 
 StructureView GridAccelerator::structure() const {
@@ -43,7 +40,7 @@ AcceleratorType gridType() {
                 GridOptions options;
                 options.cellsPerPrimitive = p.number("C");
                 options.maxResolution = p.integer("res");
-                return std::make_unique<GridAccelerator>(options, p.word("insert") == "exact");
+                return std::make_unique<GridAccelerator>(options, p.word("insert") == "exact" ? GridInsertion::Exact : GridInsertion::Box);
             },
             {"grid:C=1", "grid:C=3", "grid:C=9", "grid:C=27", "grid:C=81", "grid:insert=exact"}};
     type.draw = drawCells;  // the occupied cells, by how many primitives they hold

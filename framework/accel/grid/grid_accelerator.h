@@ -1,16 +1,18 @@
-// Wraps the uniform grid of assignment a3 in the Accelerator interface: building runs the
-// framework's gridFrame and the student's fillGridCells (then, with exact insertion, a4's
-// triangle-box test on every cell), queries the student's traversal.
+// Wraps the uniform grid of assignment a3 in the Accelerator interface through its adapter
+// (grid_adapter.h): building runs the framework's gridFrame and the student's fillGridCells
+// (then, with exact insertion, a4's triangle-box test on every cell), queries the student's
+// traversal.
 #pragma once
 
 #include "framework/accel/accelerator.h"
+#include "framework/accel/grid/grid_adapter.h"
 #include "framework/interface/grid.h"
 
 namespace rtlab {
 
 class GridAccelerator final : public Accelerator {
 public:
-    GridAccelerator(const GridOptions& options, bool exactInsertion) : options_(options), exactInsertion_(exactInsertion) {}
+    GridAccelerator(const GridOptions& options, GridInsertion insertion) : options_(options), insertion_(insertion) {}
 
     void build(const PrimitiveSet& primitives) override;
     Hit intersect(const Ray& ray, TraversalStats& stats) const override;
@@ -25,7 +27,7 @@ public:
 
 private:
     GridOptions options_;
-    bool exactInsertion_;
+    GridInsertion insertion_;
     const PrimitiveSet* primitives_ = nullptr;
     UniformGrid grid_;
 };

@@ -1,27 +1,26 @@
 #include "framework/accel/kdtree/kdtree_accelerator.h"
 
 #include "framework/accel/accelerator_registry.h"
-#include "framework/interface/a5_kdtree.h"
 
 namespace rtlab {
 
 void KdTreeAccelerator::build(const PrimitiveSet& primitives) {
     primitives_ = &primitives;
-    tree_ = builder_ == KdBuilder::NlogN ? buildKdTreeNlogN(primitives.allBounds(), options_) : buildKdTree(primitives.allBounds(), options_);
+    tree_ = KdTreeAdapter::build(primitives, options_, builder_);
 }
 
 Hit KdTreeAccelerator::intersect(const Ray& ray, TraversalStats& stats) const {
     Hit hit;
     hit.t = ray.tMax;
     Traversal traversal(*primitives_, ray, stats);
-    intersectKdTree(tree_, traversal, hit);
+    KdTreeAdapter::intersect(tree_, traversal, hit);
     if (!hit.found()) hit.t = kInfinity;
     return hit;
 }
 
 bool KdTreeAccelerator::occluded(const Ray& ray, TraversalStats& stats) const {
     Traversal traversal(*primitives_, ray, stats);
-    return occludedKdTree(tree_, traversal);
+    return KdTreeAdapter::occluded(tree_, traversal);
 }
 
 StructureView KdTreeAccelerator::structure() const { return kdTreeStructureView(tree_); }

@@ -1,8 +1,10 @@
-// Wraps the KD-tree of assignment a5 in the Accelerator interface: building runs the student's
-// buildKdTree (build=sort) or buildKdTreeNlogN (build=nlogn), queries the student's traversal.
+// Wraps the KD-tree of assignment a5 in the Accelerator interface through its adapter
+// (kdtree_adapter.h): building runs the student's buildKdTree (build=sort) or buildKdTreeNlogN
+// (build=nlogn), queries the student's traversal.
 #pragma once
 
 #include "framework/accel/accelerator.h"
+#include "framework/accel/kdtree/kdtree_adapter.h"
 #include "framework/interface/kdtree.h"
 
 namespace rtlab {
@@ -11,8 +13,6 @@ namespace rtlab {
 // planes above it), depth first, below child first, and each interior node's plane. The tree
 // must be well formed (as a builder made it: children inside the array, no cycles).
 StructureView kdTreeStructureView(const KdTree& tree);
-
-enum class KdBuilder { NlogN, Sort };
 
 class KdTreeAccelerator final : public Accelerator {
 public:

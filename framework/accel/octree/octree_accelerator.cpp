@@ -1,27 +1,28 @@
 #include "framework/accel/octree/octree_accelerator.h"
 
 #include "framework/accel/accelerator_registry.h"
+#include "framework/accel/octree/octree_adapter.h"
 #include "framework/interface/a4_octree.h"
 
 namespace rtlab {
 
 void OctreeAccelerator::build(const PrimitiveSet& primitives) {
     primitives_ = &primitives;
-    octree_ = buildOctree(OctreeInput{primitives.allBounds(), primitives.allTriangles()}, options_);
+    octree_ = OctreeAdapter::build(primitives, options_);
 }
 
 Hit OctreeAccelerator::intersect(const Ray& ray, TraversalStats& stats) const {
     Hit hit;
     hit.t = ray.tMax;
     Traversal traversal(*primitives_, ray, stats);
-    intersectOctree(octree_, traversal, hit);
+    OctreeAdapter::intersect(octree_, traversal, hit);
     if (!hit.found()) hit.t = kInfinity;
     return hit;
 }
 
 bool OctreeAccelerator::occluded(const Ray& ray, TraversalStats& stats) const {
     Traversal traversal(*primitives_, ray, stats);
-    return occludedOctree(octree_, traversal);
+    return OctreeAdapter::occluded(octree_, traversal);
 }
 
 StructureView OctreeAccelerator::structure() const { return octreeStructureView(octree_); }

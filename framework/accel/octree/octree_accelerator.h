@@ -1,5 +1,6 @@
-// Wraps the octree of assignment a4 in the Accelerator interface: building runs the student's
-// buildOctree over the primitive set, queries the student's traversal.
+// Wraps the octree of assignment a4 in the Accelerator interface through its adapter
+// (octree_adapter.h): building runs the student's buildOctree over the primitive set, queries
+// the student's traversal.
 #pragma once
 
 #include "framework/accel/accelerator.h"

@@ -1,6 +1,7 @@
 // a1/a2's functions on the grader's inputs: split calls, a whole build, and traversals of the
-// BVH that build produced.
-#include "framework/accel/bvh_accelerator.h"
+// BVH that build produced (those two through the BVH's adapter, as the accelerator builds and
+// queries it).
+#include "framework/accel/bvh_adapter.h"
 #include "framework/interface/a1_bvh.h"
 #include "framework/interface/a2_sah.h"
 #include "grader/wire/scene_codec.h"
@@ -49,16 +50,16 @@ void runBvhBuild(ByteReader& input, ByteWriter& output, WorkerState& state) {
     auto options = input.get<BvhOptions>();
     state.primitives = std::make_unique<PrimitiveSet>(state.scene);
     Bvh& bvh = state.structure.emplace<Bvh>();  // queries after a build that threw see an empty tree
-    bvh = buildBvh(buildPrimitivesOf(*state.primitives), options);
+    bvh = BvhAdapter::build(*state.primitives, options);
     writeBvh(output, bvh);
 }
 
 void answerBvhQueries(const Bvh& bvh, const PrimitiveSet& primitives, ByteReader& input, ByteWriter& output) {
     QueryRequest request = readQueryRequest(input);
     output.putVector(answerRays(
-        primitives, request.rays, request.kind == QueryKind::Occluded, [&](Traversal& t) { return occludedBvh(bvh, t); },
+        primitives, request.rays, request.kind == QueryKind::Occluded, [&](Traversal& t) { return BvhAdapter::occluded(bvh, t); },
         [&](Traversal& t, Hit& hit) {
-            return request.kind == QueryKind::Recursive ? intersectBvhRecursive(bvh, t, hit) : intersectBvh(bvh, t, hit);
+            return request.kind == QueryKind::Recursive ? BvhAdapter::intersectRecursive(bvh, t, hit) : BvhAdapter::intersect(bvh, t, hit);
         }));
 }
 
@@ -78,7 +79,7 @@ void runBvhVisits(ByteReader& input, ByteWriter& output, WorkerState& state) {
     const Bvh& bvh = builtStructure<Bvh>(state);
     writeListsPerRay(
         *state.primitives, input.getVector<Ray>(kMaxPrimitives), kMaxListedTests, output,
-        [](Traversal& t, std::vector<uint32_t>* list) { t.listTestsIn(list); }, [&](Traversal& t, Hit& hit) { intersectBvh(bvh, t, hit); });
+        [](Traversal& t, std::vector<uint32_t>* list) { t.listTestsIn(list); }, [&](Traversal& t, Hit& hit) { BvhAdapter::intersect(bvh, t, hit); });
 }
 
 const TaskRegistration registration{{kTaskSplit, runSplitCalls},

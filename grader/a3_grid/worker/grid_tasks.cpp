@@ -1,5 +1,7 @@
 // a3's functions on the grader's inputs: the resolution rule, cell lookups, the DDA's set-up,
-// step and walk, a whole grid build and traversals of the grid that build produced.
+// step and walk, a whole grid build and traversals of the grid that build produced (those two
+// through the grid's adapter, as the accelerator builds and queries it).
+#include "framework/accel/grid/grid_adapter.h"
 #include "framework/interface/a3_grid.h"
 #include "grader/wire/scene_codec.h"
 #include "grader/a3_grid/wire/grid_codec.h"
@@ -84,16 +86,15 @@ void runGridBuild(ByteReader& input, ByteWriter& output, WorkerState& state) {
         throw WireError("bad grid options");
     state.primitives = std::make_unique<PrimitiveSet>(state.scene);
     UniformGrid& grid = state.structure.emplace<UniformGrid>();  // queries after a build that threw see an empty grid
-    grid = gridFrame(state.primitives->allBounds(), options);
-    fillGridCells(grid, state.primitives->allBounds());
+    grid = GridAdapter::build(*state.primitives, options, GridInsertion::Box);
     writeGrid(output, grid);
 }
 
 void answerGridQueries(const UniformGrid& grid, const PrimitiveSet& primitives, ByteReader& input, ByteWriter& output) {
     QueryRequest request = readQueryRequest(input);
     output.putVector(answerRays(
-        primitives, request.rays, request.kind == QueryKind::Occluded, [&](Traversal& t) { return occludedGrid(grid, t); },
-        [&](Traversal& t, Hit& hit) { return intersectGrid(grid, t, hit); }));
+        primitives, request.rays, request.kind == QueryKind::Occluded, [&](Traversal& t) { return GridAdapter::occluded(grid, t); },
+        [&](Traversal& t, Hit& hit) { return GridAdapter::intersect(grid, t, hit); }));
 }
 
 void runGridQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {

@@ -1,5 +1,7 @@
 // a4's functions on the grader's inputs: the boxes, the triangle-box test, the pieces of the
-// walk, a whole build and traversals of the octree that build produced.
+// walk, a whole build and traversals of the octree that build produced (those two through the
+// octree's adapter, as the accelerator builds and queries it).
+#include "framework/accel/octree/octree_adapter.h"
 #include "framework/interface/a4_octree.h"
 #include "grader/wire/scene_codec.h"
 #include "grader/a4_octree/wire/octree_codec.h"
@@ -66,15 +68,15 @@ void runBuild(ByteReader& input, ByteWriter& output, WorkerState& state) {
         throw WireError("bad octree options");
     state.primitives = std::make_unique<PrimitiveSet>(state.scene);
     Octree& octree = state.structure.emplace<Octree>();  // queries after a build that threw see an empty octree
-    octree = buildOctree(OctreeInput{state.primitives->allBounds(), state.primitives->allTriangles()}, options);
+    octree = OctreeAdapter::build(*state.primitives, options);
     writeOctree(output, octree);
 }
 
 void answerOctreeQueries(const Octree& octree, const PrimitiveSet& primitives, ByteReader& input, ByteWriter& output) {
     QueryRequest request = readQueryRequest(input);
     output.putVector(answerRays(
-        primitives, request.rays, request.kind == QueryKind::Occluded, [&](Traversal& t) { return occludedOctree(octree, t); },
-        [&](Traversal& t, Hit& hit) { return intersectOctree(octree, t, hit); }));
+        primitives, request.rays, request.kind == QueryKind::Occluded, [&](Traversal& t) { return OctreeAdapter::occluded(octree, t); },
+        [&](Traversal& t, Hit& hit) { return OctreeAdapter::intersect(octree, t, hit); }));
 }
 
 void runQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
@@ -92,7 +94,7 @@ void runLeaves(ByteReader& input, ByteWriter& output, WorkerState& state) {
     const Octree& octree = builtStructure<Octree>(state);
     writeListsPerRay(
         *state.primitives, input.getVector<Ray>(kMaxRays), kMaxListedLeaves, output,
-        [](Traversal& t, std::vector<uint32_t>* list) { t.listLeavesIn(list); }, [&](Traversal& t, Hit& hit) { intersectOctree(octree, t, hit); });
+        [](Traversal& t, std::vector<uint32_t>* list) { t.listLeavesIn(list); }, [&](Traversal& t, Hit& hit) { OctreeAdapter::intersect(octree, t, hit); });
 }
 
 const TaskRegistration registration{{kTaskOctreeRootBox, runRootBox},     {kTaskOctreeChildBox, runChildBox},

@@ -1,6 +1,9 @@
 // a5's functions on the grader's inputs: the plane cost, events, the best plane, classification,
 // the leaf rule, the child order, a traversal of a tree the grader built by hand, a whole build
-// and traversals of the tree it produced; and the optional BSP autopartition.
+// and traversals of the tree it produced; and the optional BSP autopartition. Whole builds and
+// traversals go through the structures' adapters, as the accelerators build and query them.
+#include "framework/accel/bsp/bsp_adapter.h"
+#include "framework/accel/kdtree/kdtree_adapter.h"
 #include "framework/interface/a5_kdtree.h"
 #include "grader/wire/scene_codec.h"
 #include "grader/a5_kdtree/wire/kdtree_codec.h"
@@ -88,11 +91,11 @@ void runKdWalk(ByteReader& input, ByteWriter& output, WorkerState& state) {
         traversal.listTestsIn(&tested);
         RawQuery answer{kNoHit, 0.0f, 0, 0};
         if (query == QueryKind::Occluded) {
-            answer.prim = occludedKdTree(tree, traversal) ? 1 : 0;
+            answer.prim = KdTreeAdapter::occluded(tree, traversal) ? 1 : 0;
         } else {
             Hit hit;
             hit.t = ray.tMax;
-            answer.prim = intersectKdTree(tree, traversal, hit) ? hit.prim : kNoHit;
+            answer.prim = KdTreeAdapter::intersect(tree, traversal, hit) ? hit.prim : kNoHit;
             answer.t = hit.t;
         }
         answer.nodeVisits = static_cast<uint32_t>(stats.steps());
@@ -110,19 +113,18 @@ void runKdBuild(ByteReader& input, ByteWriter& output, WorkerState& state) {
     auto function = static_cast<KdBuildFunction>(input.get<uint8_t>());
     if (options.maxPrims < 1 || options.maxDepth < 0 || options.maxDepth > kKdMaxDepthLimit) throw WireError("bad KD-tree options");
     state.primitives = std::make_unique<PrimitiveSet>(state.scene);
-    std::span<const Bounds3f> boxes = state.primitives->allBounds();
     // An empty tree first: when the build throws, the query phases still reach the traversal
     // and report its own state (not started, or wrong on an empty tree).
     KdTree& tree = state.structure.emplace<KdTree>();
-    tree = function == KdBuildFunction::NlogN ? buildKdTreeNlogN(boxes, options) : buildKdTree(boxes, options);
+    tree = KdTreeAdapter::build(*state.primitives, options, function == KdBuildFunction::NlogN ? KdBuilder::NlogN : KdBuilder::Sort);
     writeKdTree(output, tree);
 }
 
 void answerKdQueries(const KdTree& tree, const PrimitiveSet& primitives, ByteReader& input, ByteWriter& output) {
     QueryRequest request = readQueryRequest(input);
     output.putVector(answerRays(
-        primitives, request.rays, request.kind == QueryKind::Occluded, [&](Traversal& t) { return occludedKdTree(tree, t); },
-        [&](Traversal& t, Hit& hit) { return intersectKdTree(tree, t, hit); }));
+        primitives, request.rays, request.kind == QueryKind::Occluded, [&](Traversal& t) { return KdTreeAdapter::occluded(tree, t); },
+        [&](Traversal& t, Hit& hit) { return KdTreeAdapter::intersect(tree, t, hit); }));
 }
 
 void runKdQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
@@ -141,7 +143,7 @@ void runBspBuild(ByteReader& input, ByteWriter& output, WorkerState& state) {
     if (options.maxPrims < 1 || options.maxDepth < 1 || options.maxDepth > kBspMaxDepthLimit) throw WireError("bad BSP options");
     state.primitives = std::make_unique<PrimitiveSet>(state.scene);
     BspTree& tree = state.structure.emplace<BspTree>();  // as in runKdBuild
-    tree = buildBspAutopartition(state.primitives->allTriangles(), state.primitives->allBounds(), options);
+    tree = BspAdapter::build(*state.primitives, options);
     output.put<uint64_t>(tree.nodes.size());
     output.put<uint64_t>(tree.primIndices.size());
 }
@@ -151,8 +153,8 @@ void runBspQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
     auto query = static_cast<QueryKind>(input.get<uint8_t>());
     auto rays = input.getVector<Ray>(kMaxItems);
     output.putVector(answerRays(
-        *state.primitives, rays, query == QueryKind::Occluded, [&](Traversal& t) { return occludedBsp(tree, t); },
-        [&](Traversal& t, Hit& hit) { return intersectBsp(tree, t, hit); }));
+        *state.primitives, rays, query == QueryKind::Occluded, [&](Traversal& t) { return BspAdapter::occluded(tree, t); },
+        [&](Traversal& t, Hit& hit) { return BspAdapter::intersect(tree, t, hit); }));
 }
 
 const TaskRegistration registration{{kTaskKdSahCost, runKdSahCost},     {kTaskKdEventOrder, runKdEventOrder},

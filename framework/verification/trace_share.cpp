@@ -1,4 +1,4 @@
-#include "framework/render/trace_share.h"
+#include "framework/verification/trace_share.h"
 
 #include "framework/core/error.h"
 #include "framework/render/tiles.h"

@@ -1,4 +1,4 @@
-#include "framework/render/edge_pixels.h"
+#include "framework/verification/edge_pixels.h"
 
 #include "framework/render/direct_lighting.h"
 #include "framework/render/spawn_ray.h"

@@ -1,4 +1,4 @@
-#include "framework/render/replicates.h"
+#include "framework/verification/replicates.h"
 
 #include "framework/core/error.h"
 

@@ -1,4 +1,4 @@
-#include "framework/render/statistical_comparison.h"
+#include "framework/verification/statistical_comparison.h"
 
 #include "framework/core/error.h"
 

@@ -16,7 +16,7 @@
 #pragma once
 
 #include "framework/render/image.h"
-#include "framework/render/replicates.h"
+#include "framework/verification/replicates.h"
 
 #include <cstdint>
 #include <vector>

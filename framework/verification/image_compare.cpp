@@ -1,4 +1,4 @@
-#include "framework/render/image_compare.h"
+#include "framework/verification/image_compare.h"
 
 #include "framework/core/error.h"
 #include "framework/render/image_io.h"
