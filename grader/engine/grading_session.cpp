@@ -9,6 +9,7 @@
 #include <iostream>
 #include <map>
 #include <random>
+#include <set>
 #include <unistd.h>
 
 namespace rtlab::grader {
@@ -99,6 +100,13 @@ void scoreDefinedTests(const TestGroup& group, const SandboxRun& run, const std:
     }
 }
 
+// Whether every test a group defines already has a part that was not started. Running the
+// group cannot change those verdicts (mergeSameNamed reports a test not started when any part
+// of it is), so an assignment left untouched costs one group per test, not one per scene.
+bool allNotStarted(const std::vector<TestResult>& defined, const std::set<std::string>& notStarted) {
+    return !defined.empty() && std::all_of(defined.begin(), defined.end(), [&](const TestResult& r) { return notStarted.count(r.name) > 0; });
+}
+
 }  // namespace
 
 GradingReport gradeWorker(const GradingOptions& options, std::vector<TestResult> leading) {
@@ -141,13 +149,18 @@ GradingReport gradeWorker(const GradingOptions& options, std::vector<TestResult>
     WorkerSpec worker{options.workerPath, options.limits};
     TimeoutStrikes strikes;
     bool terminal = options.progress && isatty(STDERR_FILENO);
+    std::set<std::string> notStarted;
     for (size_t i = 0; i < groups.size(); ++i) {
         const TestGroup& group = groups[i];
+        if (allNotStarted(defined[i], notStarted)) continue;
         if (terminal) std::cerr << "\r\033[K[" << i + 1 << "/" << groups.size() << "] " << group.title << std::flush;
         SandboxRun run;
         if (!options.unavailableWorker.empty()) run = unavailableWorkerRun(group.phases.size(), options.unavailableWorker);
         else if (!group.phases.empty()) run = runSandboxed(worker, group.phases, &strikes);
+        size_t first = report.tests.size();
         scoreDefinedTests(group, run, defined[i], report.tests);
+        for (size_t k = first; k < report.tests.size(); ++k)
+            if (report.tests[k].status == TestStatus::NotStarted) notStarted.insert(report.tests[k].name);
         if (report.studentOutput.size() < 4096) report.studentOutput += run.output.substr(0, 4096 - report.studentOutput.size());
     }
     if (terminal) std::cerr << "\r\033[K" << std::flush;

@@ -1,6 +1,7 @@
 #include "grader/engine/sandbox.h"
 
 #include "framework/core/error.h"
+#include "grader/engine/sandbox_start.h"
 #include "grader/engine/system_call_filter.h"
 #include "grader/engine/worker_conversation.h"
 #include "grader/wire/worker_protocol.h"
@@ -13,12 +14,9 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
-#include <grp.h>
 #include <optional>
 #include <poll.h>
-#include <sys/prctl.h>
-#include <sys/resource.h>
-#include <sys/syscall.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <thread>
 #include <time.h>
@@ -32,7 +30,6 @@ using worker::RecordKind;
 
 constexpr size_t kMaxCapturedOutput = 4096;
 constexpr uint64_t kWorkerBaseMiB = 64;  // the worker's own code, stacks and the C runtime
-constexpr uid_t kNobody = 65534;
 // After the end of its request a worker has this long to say Done and exit.
 constexpr double kEndSeconds = 2.0;
 // A phase's limit is CPU time, and its wall-clock time may be this many times the limit: room
@@ -61,44 +58,29 @@ std::optional<double> processCpuSeconds(pid_t pid) {
     return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
 }
 
-// What runs in the forked child before the worker image replaces it: only grader code, and
-// only async-signal-safe steps after the filter is built. Never returns.
-[[noreturn]] void startWorker(const WorkerSpec& spec, int requestFd, int resultFd, int outputFd, uint64_t addressSpace, pid_t grader) {
-    int filterFd = -1;
-    try {
-        filterFd = exportSystemCallFilter(worker::kResultFd, getpid());
-    } catch (...) {
-        _exit(worker::kExitSandboxFailed);
-    }
-    // Descriptors 0..4 are the request, the output capture (1, 2), the results and the filter.
-    int moved[5];
-    for (int i = 0; i < 5; ++i) moved[i] = fcntl(std::array{requestFd, outputFd, outputFd, resultFd, filterFd}[i], F_DUPFD_CLOEXEC, 10);
-    for (int i = 0; i < 5; ++i)
-        if (moved[i] < 0 || dup2(moved[i], i) != i) _exit(worker::kExitSandboxFailed);
-    close_range(5, ~0u, 0);
-    // Opened while still the grader's user, so the worker runs wherever the build lives (a
-    // folder nobody may not enter, say); executing it by descriptor checks only the file.
-    int executable = open(spec.path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (executable < 0) _exit(worker::kExitSandboxFailed);
-
-    rlimit memory{addressSpace, addressSpace};
-    rlimit cpu{static_cast<rlim_t>(spec.limits.cpuSeconds), static_cast<rlim_t>(spec.limits.cpuSeconds + 1)};
-    rlimit none{0, 0};
-    rlimit files{8, 8};
-    if (setrlimit(RLIMIT_AS, &memory) != 0 || setrlimit(RLIMIT_CPU, &cpu) != 0 || setrlimit(RLIMIT_CORE, &none) != 0 ||
-        setrlimit(RLIMIT_FSIZE, &none) != 0 || setrlimit(RLIMIT_NOFILE, &files) != 0)
-        _exit(worker::kExitSandboxFailed);
-    // A grader running as root hands the worker to nobody: no file of the grader's is its own.
-    if (geteuid() == 0 && (setgroups(0, nullptr) != 0 || setgid(kNobody) != 0 || setuid(kNobody) != 0))
-        _exit(worker::kExitSandboxFailed);
-    prctl(PR_SET_PDEATHSIG, SIGKILL);  // after setuid, which clears it
-    if (getppid() != grader) _exit(worker::kExitSandboxFailed);  // the grader died before that
-    char name[] = "rtlab-worker";
-    char* argv[] = {name, nullptr};
+// Spawns rtlab-sandbox-start with the worker's pipes on descriptors 0-3 (sandbox_start.h).
+// posix_spawn shares the grader's memory until the exec instead of copying its page tables.
+pid_t spawnWorker(const WorkerSpec& spec, int requestFd, int resultFd, int outputFd, uint64_t addressSpace) {
+    SandboxStart start{spec.path, addressSpace, static_cast<uint64_t>(spec.limits.cpuSeconds), getpid()};
+    std::vector<std::string> arguments = sandboxStartArguments(start);
+    std::vector<char*> argv;
+    for (std::string& a : arguments) argv.push_back(a.data());
+    argv.push_back(nullptr);
     char* envp[] = {nullptr};
-    char empty[] = "";
-    syscall(SYS_execveat, executable, empty, argv, envp, AT_EMPTY_PATH);
-    _exit(worker::kExitSandboxFailed);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    // The sources are the grader's pipes, all above 2, duplicated before descriptor 3 is
+    // replaced; the duplicates lose close-on-exec, the originals keep it.
+    posix_spawn_file_actions_adddup2(&actions, requestFd, 0);
+    posix_spawn_file_actions_adddup2(&actions, outputFd, 1);
+    posix_spawn_file_actions_adddup2(&actions, outputFd, 2);
+    posix_spawn_file_actions_adddup2(&actions, resultFd, worker::kResultFd);
+    pid_t pid = -1;
+    const std::string launcher = sandboxStartPath();
+    int error = posix_spawn(&pid, launcher.c_str(), &actions, nullptr, argv.data(), envp);
+    posix_spawn_file_actions_destroy(&actions);
+    if (error != 0) throw Error("grader: cannot start " + launcher + ": " + std::strerror(error));
+    return pid;
 }
 
 // The grader's side of one worker: streams the phases' requests, reads records until the
@@ -117,11 +99,7 @@ public:
             throw Error(std::string("grader: cannot create a pipe: ") + std::strerror(errno));
         uint64_t addressSpace = (kWorkerBaseMiB + uint64_t(spec_.limits.memoryMiB)) << 20;
         for (size_t k : order_) addressSpace += 2 * phases_[k].input.size();
-        std::fflush(nullptr);
-        pid_t grader = getpid();
-        pid_t pid = fork();
-        if (pid < 0) throw Error(std::string("grader: cannot fork: ") + std::strerror(errno));
-        if (pid == 0) startWorker(spec_, requestPipe[0], resultPipe[1], outputPipe[1], addressSpace, grader);
+        pid_t pid = spawnWorker(spec_, requestPipe[0], resultPipe[1], outputPipe[1], addressSpace);
         close(requestPipe[0]);
         close(resultPipe[1]);
         close(outputPipe[1]);
