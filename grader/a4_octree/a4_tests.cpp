@@ -200,6 +200,10 @@ std::vector<OverlapCase> overlapCases() {
         // The boxes overlap; the triangle lies in the plane x + y = 2.5 and the box has x + y <= 2:
         // the triangle's normal (1, 1, 0) separates.
         {"boxes overlap, the triangle's plane passes beyond the box", {{2.5f, 0, 0}, {0, 2.5f, 0}, {0, 2.5f, 1}, unit}, false},
+        // The plane x + y + z = 3.5 passes beyond the corner (1, 1, 1) (sum 3). Every other axis
+        // overlaps: the box normals ([0, 3.5] against [0, 1]) and the edge axes, which are box
+        // normals or (1, 1, 0) and its like ([0, 3.5] against [0, 2]). Only the normal separates.
+        {"only the triangle's normal separates", {{3.5f, 0, 0}, {0, 3.5f, 0}, {0, 0, 3.5f}, unit}, false},
         // e1 = p2 - p1 = (-0.5, 0.5, 0.75), axis e1 x y = (-0.75, 0, -0.5): the triangle projects
         // to [-2.125, -1.375], the box to [-1.25, 0]. The box normals only touch (x = 1), the
         // normal (0.375, 0.75, -0.25) gives 0.4375 inside the box's [-0.25, 1.125].
