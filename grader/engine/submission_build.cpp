@@ -5,6 +5,7 @@
 #include "grader/engine/pristine_stubs.h"
 #include "grader/engine/stub_object_cache.h"
 #include "grader/engine/submission_files.h"
+#include "grader/engine/worker_compile.h"
 
 #include <nlohmann/json.hpp>
 
@@ -153,23 +154,13 @@ SubmissionBuild buildSubmission(const std::string& submissionDir, const std::str
     }
     build.fromSubmission = mergeSources(submission, stubs, host.sources);
 
-    CompileInputs inside = sandbox.visiblePaths(host);
-    std::vector<std::string> command = {fs::canonical(toolchain.at("compiler").get<std::string>()).string()};
-    for (const auto& flag : toolchain.at("compile_flags")) command.push_back(flag.get<std::string>());
-    command.insert(command.end(), {"-I" + inside.headers, "-I" + inside.sources});
-    for (const auto& entry : fs::recursive_directory_iterator(host.sources))
-        if (entry.path().extension() == ".cpp") command.push_back((fs::path(inside.sources) / entry.path().lexically_relative(host.sources)).string());
-    for (const auto& entry : fs::directory_iterator(host.objects)) command.push_back((fs::path(inside.objects) / entry.path().filename()).string());
-    for (const auto& flag : toolchain.at("link_flags")) command.push_back(flag.get<std::string>());
-    command.insert(command.end(), {"-o", (fs::path(inside.output) / "rtlab-worker").string()});
-
-    ProcessResult result = sandbox.run(host, command, processLimits);
-    build.log = result.output;
-    if (result.droppedBytes > 0) build.log += "\n[" + std::to_string(result.droppedBytes) + " more bytes of compiler output not shown]\n";
-    if (result.timedOut) build.log = "the compiler was stopped after the limit of " + std::to_string(int(limits.wallSeconds)) + " s\n" + build.log;
-    else if (!result.succeeded() && build.log.empty()) build.log = "the compiler failed: " + result.failure + "\n";
+    WorkerCompile compile = compileWorker(sandbox, host, toolchain, processLimits);
+    build.log = compile.log;
+    if (compile.droppedBytes > 0) build.log += "\n[" + std::to_string(compile.droppedBytes) + " more bytes of compiler output not shown]\n";
+    if (compile.timedOut) build.log = "the compiler was stopped after the limit of " + std::to_string(int(limits.wallSeconds)) + " s\n" + build.log;
+    else if (!compile.succeeded && build.log.empty()) build.log = "the compiler failed: " + compile.failure + "\n";
     build.executable = (fs::path(host.output) / "rtlab-worker").string();
-    build.succeeded = result.succeeded() && fs::is_regular_file(build.executable);
+    build.succeeded = compile.succeeded;
     return build;
 }
 
