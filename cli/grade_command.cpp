@@ -10,6 +10,7 @@
 #include "grader/engine/grading_session.h"
 #include "grader/engine/grading_rubric.h"
 #include "grader/engine/submission_grading.h"
+#include "viewer/report_viewers.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -103,7 +104,9 @@ void writeReports(const grader::GradingReport& report, const GradeFlags& flags) 
     if (!flags.gradescope.empty()) grader::writeGradescopeResults(report, flags.gradescope);
     if (!flags.junit.empty()) grader::writeJunitReport(report, flags.junit);
     if (!flags.html.empty()) {
-        grader::writeHtmlReport(report, flags.html);
+        // The failing cases' viewers first, so the report links to folders that exist.
+        fs::create_directories(flags.html);
+        grader::writeHtmlReport(report, flags.html, viewer::writeReportViewers(report, flags.html));
         if (!flags.quiet) std::cout << "HTML report: " << (fs::absolute(flags.html) / "index.html").string() << "\n";
     }
 }

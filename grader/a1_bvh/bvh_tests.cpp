@@ -1,5 +1,7 @@
 #include "grader/a1_bvh/bvh_tests.h"
 
+#include "framework/accel/bvh_accelerator.h"
+
 #include "grader/a1_bvh/a1_tests.h"
 #include "grader/a1_bvh/bvh_structure.h"
 #include "grader/a1_bvh/visit_order.h"
@@ -39,6 +41,8 @@ StructureReport checkBvh(const BvhConfig& config, const PhaseOutcome& build, con
         report.problems.push_back(problem);
         return report;
     }
+    // Numbers only: an index out of range is the viewer's to drop, never followed here.
+    report.view = bvhStructureView(*bvh);
     BvhStructureReport invariants = checkBvhStructure(*bvh, primBounds, scope == CheckScope::HitSetScene);
     report.problems = invariants.problems;
     report.problemCount = invariants.problemCount;
@@ -61,6 +65,7 @@ StructurePlugin bvhPlugin(const BvhConfig& config) {
     StructurePlugin plugin;
     plugin.assignment = config.assignment;
     plugin.label = config.label;
+    plugin.drawing = "bvh";
     plugin.build = [config](const Scene& scene) {
         ByteWriter input;
         writeScene(scene, input);

@@ -32,6 +32,7 @@ void mergeSameNamed(std::vector<TestResult>& results) {
         m.seconds += r.seconds;
         m.details.insert(m.details.end(), r.details.begin(), r.details.end());
         m.images.insert(m.images.end(), r.images.begin(), r.images.end());
+        for (FailedCase& c : r.failedCases) addFailedCase(m, std::move(c));
         if (m.status == r.status && m.status != TestStatus::Failed) continue;  // all passed, or none started
         // Mixed: a failure's reason says more than "not started", which says more than nothing.
         if (m.status != TestStatus::Failed && (r.status == TestStatus::Failed || m.status == TestStatus::Passed)) m.reason = r.reason;

@@ -51,7 +51,7 @@ std::string heatMapLegend() {
 
 }  // namespace
 
-void writeHtmlReport(const GradingReport& untrusted, const std::string& directory) {
+void writeHtmlReport(const GradingReport& untrusted, const std::string& directory, const ReportLinks& viewerLinks) {
     const GradingReport report = displaySafe(untrusted);
     fs::create_directories(fs::path(directory) / "images");
     std::ostringstream html;
@@ -77,6 +77,15 @@ void writeHtmlReport(const GradingReport& untrusted, const std::string& director
         std::string output;
         for (const std::string& line : t.details) output += (output.empty() ? "" : "\n") + line;
         if (!output.empty()) html << "<pre>" << escapeMarkup(output) << "</pre>\n";
+        // Keyed by the untrusted name: the links were made from the report before displaySafe.
+        if (auto links = viewerLinks.find(untrusted.tests[size_t(&t - report.tests.data())].name); links != viewerLinks.end()) {
+            html << "<ul class=\"viewer-links\">\n";
+            for (const ReportLink& link : links->second) {
+                if (link.href.empty()) html << "<li>" << escapeMarkup(link.label) << "</li>\n";
+                else html << "<li><a href=\"" << escapeMarkup(link.href) << "\">open in viewer</a>: " << escapeMarkup(link.label) << "</li>\n";
+            }
+            html << "</ul>\n";
+        }
         if (t.images.empty()) continue;
         html << "<div class=\"images\">\n";
         for (const ReportImage& image : t.images) {

@@ -26,6 +26,10 @@ struct StructureReport {
     std::vector<std::string> problems;  // empty: the structure is valid (the first few)
     size_t problemCount = 0;            // all of them, when more than listed
     std::string summary;                // one line for a valid one: sizes, references per primitive
+    // The structure as the viewer draws it, also when invalid, as far as it can be read without
+    // following an index out of range (unset: it cannot); the report's viewer links show it.
+    std::optional<StructureView> view;
+    std::optional<std::array<int, 3>> gridResolution;  // a uniform grid's view: its cells per axis
     // Set for a valid structure by plugins that have these tests:
     std::optional<double> cost;  // the grader's own cost of the structure (its SAH cost)
     // Judges the primitives each ray's closest-hit traversal tested, in order, on this structure.
@@ -52,6 +56,7 @@ struct CostTest {
 struct StructurePlugin {
     std::string assignment;  // "a3"
     std::string label;       // "grid"
+    std::string drawing;     // the accelerator registry's name whose drawing fits the view ("bvh")
     // The build phase: the scene in, the structure the student's code built out.
     std::function<ChildPhase(const Scene& scene)> build;
     // The worker task answering `u8 QueryKind, [Ray]` with one RawQuery per ray, and the
