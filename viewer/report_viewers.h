@@ -1,4 +1,4 @@
-// The HTML report's "open in viewer" links (docs/grading.md#open-in-viewer): every failing
+// The HTML report's "open in viewer" links (docs/viewer.md#from-the-report): every failing
 // test's recorded cases (grader/engine/failed_case.h, at most kViewerCasesPerTest each) written
 // as viewer folders under REPORT/viewer/, and the links the report shows for them. The grader
 // records the cases as plain data and never includes this file; the command line calls it

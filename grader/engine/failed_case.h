@@ -1,5 +1,5 @@
-// A failing case as plain data, so the HTML report can link it to the viewer (docs/grading.md,
-// "Open in viewer"): the ray, the student's answer and the expected one, the scene, and where a
+// A failing case as plain data, so the HTML report can link it to the viewer
+// (docs/viewer.md#from-the-report): the ray, the student's answer and the expected one, the scene, and where a
 // test has them the student's structure or DDA cells. The grader records it while scoring; the
 // viewer (viewer/report_viewers.h, a layer above) turns it into a page. The grader never
 // includes the viewer, so this is all it knows of it.
