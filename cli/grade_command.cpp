@@ -12,6 +12,7 @@
 #include "grader/engine/submission_grading.h"
 #include "viewer/report_viewers.h"
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -106,8 +107,21 @@ void writeReports(const grader::GradingReport& report, const GradeFlags& flags) 
     if (!flags.html.empty()) {
         // The failing cases' viewers first, so the report links to folders that exist.
         fs::create_directories(flags.html);
-        grader::writeHtmlReport(report, flags.html, viewer::writeReportViewers(report, flags.html));
-        if (!flags.quiet) std::cout << "HTML report: " << (fs::absolute(flags.html) / "index.html").string() << "\n";
+        auto start = std::chrono::steady_clock::now();
+        grader::ReportLinks links = viewer::writeReportViewers(report, flags.html);
+        double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        grader::writeHtmlReport(report, flags.html, links);
+        size_t pages = 0;
+        for (const auto& [test, list] : links) pages += list.size();
+        if (!flags.quiet) {
+            std::cout << "HTML report: " << (fs::absolute(flags.html) / "index.html").string();
+            if (pages > 0) {
+                char written[96];
+                std::snprintf(written, sizeof written, " (%zu failing cases in the viewer, written in %.2f s)", pages, seconds);
+                std::cout << written;
+            }
+            std::cout << "\n";
+        }
     }
 }
 

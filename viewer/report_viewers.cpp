@@ -69,8 +69,9 @@ CaseView caseViewOf(const grader::FailedCase& failed) {
     view.title = failed.title;
     view.notes = failed.notes;
     view.scene = failed.scene.get();
-    if (failed.structure && !failed.accelerator.empty()) {
+    if (failed.structure) {
         view.acceleratorName = failed.accelerator;
+        view.draw = failed.draw;
         view.structure = failed.structure;
         view.gridResolution = failed.gridResolution;
     }
@@ -106,13 +107,13 @@ grader::ReportLinks writeReportViewers(const grader::GradingReport& report, cons
         for (size_t k = 0; k < test.failedCases.size() && k < grader::kViewerCasesPerTest; ++k) {
             const grader::FailedCase& failed = test.failedCases[k];
             std::string name = folderName(test.name, k);
-            std::string label = escapeUntrusted(failed.title, TextLayout::OneLine);
+            std::string label = grader::escapeUntrusted(failed.title, grader::TextLayout::OneLine);
             fs::create_directories(folder);
             try {
                 writeCaseViewer(folder / name, caseViewOf(failed));
                 links[test.name].push_back({label, std::string(kReportViewerFolder) + "/" + name + "/index.html"});
             } catch (const Error& e) {
-                links[test.name].push_back({label + " (no viewer: " + escapeUntrusted(e.what(), TextLayout::OneLine) + ")", ""});
+                links[test.name].push_back({label + " (no viewer: " + grader::escapeUntrusted(e.what(), grader::TextLayout::OneLine) + ")", ""});
             }
         }
     }

@@ -66,6 +66,7 @@ StructurePlugin bvhPlugin(const BvhConfig& config) {
     plugin.assignment = config.assignment;
     plugin.label = config.label;
     plugin.drawing = "bvh";
+    plugin.draw = drawBvh;
     plugin.build = [config](const Scene& scene) {
         ByteWriter input;
         writeScene(scene, input);

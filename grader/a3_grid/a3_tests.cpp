@@ -527,6 +527,7 @@ StructurePlugin gridPlugin() {
     plugin.assignment = kA3;
     plugin.label = "grid";
     plugin.drawing = "grid";
+    plugin.draw = drawCells;
     plugin.build = [options](const Scene& scene) {
         ByteWriter input;
         writeScene(scene, input);

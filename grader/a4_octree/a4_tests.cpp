@@ -569,7 +569,7 @@ StructureReport checkOctree(const PhaseOutcome& build, const Scene& scene, const
     bool childrenInRange = std::all_of(octree->nodes.begin(), octree->nodes.end(), [&](const OctreeNode& n) {
         return n.isLeaf() || size_t(n.firstChild) + kOctreeChildren <= octree->nodes.size();
     });
-    if (childrenInRange) report.view = octreeStructureView(*octree);
+    if (childrenInRange) report.view = octreeStructureView(*octree, octreeNodeBoxes(*octree));
     OctreeStructureReport check = checkOctreeStructure(*octree, scene, options);
     report.problems = check.problems;
     report.problemCount = check.problemCount;
@@ -588,6 +588,7 @@ StructurePlugin octreePlugin(std::shared_ptr<SceneMemo> memo) {
     plugin.assignment = kA4;
     plugin.label = "octree";
     plugin.drawing = "octree";
+    plugin.draw = drawLevels;
     plugin.build = [options, memo](const Scene& scene) {
         memo->keep(scene);
         return buildPhase(scene, options);
@@ -665,7 +666,8 @@ TestGroup visitOrderGroup(std::shared_ptr<PreparedScene> scene) {
             failed.notes = {verdict.problems[k]};
             failed.scene = sharedScene(scene);
             failed.accelerator = "octree";
-            failed.structure = octreeStructureView(*octree);
+            failed.draw = drawLevels;
+            failed.structure = octreeStructureView(*octree, boxes);
             CaseRay& ray = failed.rays.emplace_back();
             ray.ray = (*rays)[r];
             ray.label = "ray " + std::to_string(r) + ": the leaves its walk entered, in order";

@@ -361,6 +361,7 @@ StructurePlugin kdPlugin(const std::string& label, worker::KdBuildFunction funct
     plugin.assignment = kA5;
     plugin.label = label;
     plugin.drawing = "kdtree";
+    plugin.draw = drawPlanes;
     plugin.build = buildPhase(stub, worker::kTaskKdBuild, [options, function](ByteWriter& input) {
         input.put(options);
         input.put<uint8_t>(static_cast<uint8_t>(function));

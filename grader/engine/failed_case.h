@@ -8,6 +8,7 @@
 // validated (numbers, counts within their wire limits); strings are written by the grader.
 #pragma once
 
+#include "framework/accel/structure_drawing.h"
 #include "framework/accel/structure_view.h"
 #include "framework/core/hit.h"
 #include "framework/core/ray.h"
@@ -73,7 +74,8 @@ struct FailedCase {
     std::string title;               // "[bunny] ray 17"
     std::vector<std::string> notes;  // what was expected and what came back, in words
     std::shared_ptr<const Scene> scene;  // the graded scene (shared with the grading run); may be null
-    std::string accelerator;             // the registry name whose drawing fits `structure` ("bvh-median")
+    std::string accelerator;             // the structure's name on the page ("bvh")
+    StructureDrawer draw = nullptr;      // how `structure` is drawn (drawBvh, drawCells, ...)
     std::optional<StructureView> structure;  // what the student's build returned, when it could be read
     std::optional<std::array<int, 3>> gridResolution;  // a uniform grid's: its cells per axis
     std::vector<CaseRay> rays;

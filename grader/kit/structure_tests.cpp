@@ -138,6 +138,7 @@ std::optional<StructureReport> scoreStructure(const StructurePlugin& plugin, con
         failed.scene = sharedScene(scene);
         if (view) {
             failed.accelerator = plugin.drawing;
+            failed.draw = plugin.draw;
             failed.structure = view;
             failed.gridResolution = gridResolution;
         }
@@ -305,6 +306,7 @@ TestGroup structureSceneGroup(const StructurePlugin& plugin, std::shared_ptr<Pre
         auto withStructure = [&](FailedCase failed) {
             if (view) {
                 failed.accelerator = plugin.drawing;
+                failed.draw = plugin.draw;
                 failed.structure = view;
                 failed.gridResolution = gridResolution;
             }

@@ -7,6 +7,7 @@
 // named <assignment>/<label>/<test>; reference entries <label>/<scene>.
 #pragma once
 
+#include "framework/accel/structure_drawing.h"
 #include "grader/kit/accelerator_checks.h"
 #include "grader/kit/given_structure.h"
 #include "grader/kit/stress_scenes.h"
@@ -56,7 +57,10 @@ struct CostTest {
 struct StructurePlugin {
     std::string assignment;  // "a3"
     std::string label;       // "grid"
-    std::string drawing;     // the accelerator registry's name whose drawing fits the view ("bvh")
+    std::string drawing;     // the structure's name in the report's viewer pages ("bvh")
+    // How those pages draw the view: the function the registry entry names as its draw
+    // (structure_drawing.h), named here because rtlab-grader does not link the registry.
+    StructureDrawer draw = nullptr;
     // The build phase: the scene in, the structure the student's code built out.
     std::function<ChildPhase(const Scene& scene)> build;
     // The worker task answering `u8 QueryKind, [Ray]` with one RawQuery per ray, and the

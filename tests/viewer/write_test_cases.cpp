@@ -10,6 +10,7 @@
 //               and script, linked to its viewer as `rtlab grade --html` links it;
 //   passing/    a report whose tests all pass: no viewer folder.
 // Usage: viewer_test_cases OUTPUT_DIR (prints the cells of the DDA case as JSON on stdout).
+#include "framework/accel/bvh_accelerator.h"
 #include "framework/core/error.h"
 #include "framework/scene/gltf_loader.h"
 #include "grader/a3_grid/grid_oracle.h"
@@ -65,6 +66,7 @@ void writeHostile(const fs::path& dir, const fs::path& sourceDir) {
     view.notes = {kHostile, "javascript:alert(1)", std::string("\x1b]0;title\x07 and \xc3\x28 invalid UTF-8")};
     view.scene = &scene;
     view.acceleratorName = "bvh";
+    view.draw = drawBvh;
     // A structure with a cycle, a link out of range and a leaf whose list runs past the end.
     StructureView s;
     float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
