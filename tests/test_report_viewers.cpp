@@ -1,7 +1,8 @@
 // The HTML report's "open in viewer" links (docs/viewer.md#from-the-report): a failing test's
 // cases become viewer folders under REPORT/viewer with relative links, at most
-// kViewerCasesPerTest a test, each capped; a passing report writes no viewer data and removes
-// the viewers an earlier report left; the heat map's legend is printed once.
+// kViewerCasesPerTest a test and kViewerPagesPerReport a report, each capped; a passing report
+// writes no viewer data and removes the viewers an earlier report left; the heat map's legend
+// is printed once.
 #include "framework/scene/gltf_loader.h"
 #include "framework/verification/image_compare.h"
 #include "grader/engine/grading_report.h"
@@ -112,6 +113,23 @@ TEST_CASE("a failing report links each case to its viewer; a passing one writes 
     report.tests[0].status = TestStatus::Failed;
     writeReport(report, dir);
     CHECK(fs::is_directory(dir / "viewer" / "notes"));
+}
+
+TEST_CASE("a report writes at most kViewerPagesPerReport viewer pages; the cases past them are listed without a link") {
+    auto scene = std::make_shared<const Scene>(loadGltf(RTLAB_SOURCE_DIR "/scenes/cornell-box.gltf"));
+    GradingReport report;
+    for (size_t i = 0; i * kViewerCasesPerTest <= viewer::kViewerPagesPerReport; ++i) {
+        TestResult& t = report.tests.emplace_back();
+        t.name = "a1/test-" + std::to_string(i);
+        for (size_t k = 0; k < kViewerCasesPerTest; ++k) addFailedCase(t, wrongHit(scene, int(k)));
+    }
+    fs::path dir = test::outputDir("report_viewers") / "many";
+    fs::remove_all(dir);
+    writeReport(report, dir);
+    std::string page = readFile(dir / "index.html");
+    CHECK(count(page, ">open in viewer</a>") == viewer::kViewerPagesPerReport);
+    CHECK(count(page, "viewer pages went to the tests above") == kViewerCasesPerTest);
+    CHECK(size_t(std::distance(fs::directory_iterator(dir / "viewer"), fs::directory_iterator())) == viewer::kViewerPagesPerReport);
 }
 
 TEST_CASE("a DDA case shows both walks; an image case its worst pixel") {

@@ -102,16 +102,24 @@ grader::ReportLinks writeReportViewers(const grader::GradingReport& report, cons
     const fs::path folder = reportDir / kReportViewerFolder;
     removeOldViewers(folder);
     grader::ReportLinks links;
+    size_t pages = 0;
     for (const grader::TestResult& test : report.tests) {
         if (test.status != grader::TestStatus::Failed) continue;
         for (size_t k = 0; k < test.failedCases.size() && k < grader::kViewerCasesPerTest; ++k) {
             const grader::FailedCase& failed = test.failedCases[k];
             std::string name = folderName(test.name, k);
             std::string label = grader::escapeUntrusted(failed.title, grader::TextLayout::OneLine);
+            if (pages >= kViewerPagesPerReport) {
+                links[test.name].push_back({label + " (no viewer: the report's " + std::to_string(kViewerPagesPerReport) +
+                                                " viewer pages went to the tests above)",
+                                            ""});
+                continue;
+            }
             fs::create_directories(folder);
             try {
                 writeCaseViewer(folder / name, caseViewOf(failed));
                 links[test.name].push_back({label, std::string(kReportViewerFolder) + "/" + name + "/index.html"});
+                ++pages;
             } catch (const Error& e) {
                 links[test.name].push_back({label + " (no viewer: " + grader::escapeUntrusted(e.what(), grader::TextLayout::OneLine) + ")", ""});
             }

@@ -14,6 +14,10 @@ namespace rtlab::viewer {
 
 // The folder under the report's that holds its viewers.
 inline constexpr const char* kReportViewerFolder = "viewer";
+// At most this many viewer pages a report, in the report's order of tests: each page inlines
+// three.js (about 0.9 MB a page), so a submission that fails everything still gets a report of
+// about 30 MB, not hundreds. The cases past it are listed without a page.
+inline constexpr size_t kViewerPagesPerReport = 30;
 
 // What one failing case shows: the student's answer against the expected one, the student's
 // structure, the DDA's cells, the failed image at its worst pixel. Points into failed.scene.
