@@ -61,12 +61,29 @@ StructureReport checkBvh(const BvhConfig& config, const PhaseOutcome& build, con
     return report;
 }
 
+// The registry name that builds this configuration's tree with the student's code (the report's
+// viewer traces a failing ray through it); options at their defaults are left out.
+std::string registryName(const BvhOptions& o) {
+    const char* split = o.method == SplitMethod::Median        ? "median"
+                        : o.method == SplitMethod::Middle      ? "middle"
+                        : o.method == SplitMethod::EqualCounts ? "equal"
+                        : o.method == SplitMethod::SahSweep    ? "sah"
+                                                               : "buckets";
+    const BvhOptions defaults;
+    std::string name = std::string("bvh:split=") + split;
+    if (o.buckets != defaults.buckets) name += ",B=" + std::to_string(o.buckets);
+    if (o.maxLeaf != defaults.maxLeaf) name += ",leaf=" + std::to_string(o.maxLeaf);
+    if (o.allAxes) name += ",axes=all";
+    return name;
+}
+
 StructurePlugin bvhPlugin(const BvhConfig& config) {
     StructurePlugin plugin;
     plugin.assignment = config.assignment;
     plugin.label = config.label;
     plugin.drawing = "bvh";
     plugin.draw = drawBvh;
+    plugin.traceAccelerator = registryName(config.options);
     plugin.build = [config](const Scene& scene) {
         ByteWriter input;
         writeScene(scene, input);

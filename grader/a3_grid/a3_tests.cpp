@@ -528,6 +528,7 @@ StructurePlugin gridPlugin() {
     plugin.label = "grid";
     plugin.drawing = "grid";
     plugin.draw = drawCells;
+    plugin.traceAccelerator = "grid";
     plugin.build = [options](const Scene& scene) {
         ByteWriter input;
         writeScene(scene, input);

@@ -589,6 +589,7 @@ StructurePlugin octreePlugin(std::shared_ptr<SceneMemo> memo) {
     plugin.label = "octree";
     plugin.drawing = "octree";
     plugin.draw = drawLevels;
+    plugin.traceAccelerator = "octree";
     plugin.build = [options, memo](const Scene& scene) {
         memo->keep(scene);
         return buildPhase(scene, options);

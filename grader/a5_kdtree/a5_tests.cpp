@@ -362,6 +362,7 @@ StructurePlugin kdPlugin(const std::string& label, worker::KdBuildFunction funct
     plugin.label = label;
     plugin.drawing = "kdtree";
     plugin.draw = drawPlanes;
+    plugin.traceAccelerator = function == worker::KdBuildFunction::NlogN ? "kdtree:build=nlogn" : "kdtree:build=sort";
     plugin.build = buildPhase(stub, worker::kTaskKdBuild, [options, function](ByteWriter& input) {
         input.put(options);
         input.put<uint8_t>(static_cast<uint8_t>(function));
@@ -400,6 +401,7 @@ StructurePlugin bspPlugin() {
     StructurePlugin plugin;
     plugin.assignment = kA5;
     plugin.label = "bsp";
+    plugin.traceAccelerator = "bsp";
     plugin.build = buildPhase(kStubBsp, worker::kTaskBspBuild, [options](ByteWriter& input) { input.put(options); });
     plugin.queryTask = worker::kTaskBspQuery;
     plugin.queries = {{"closest-hits", worker::QueryKind::Closest, kStubBspClosest}, {"any-hits", worker::QueryKind::Occluded, kStubBspOccluded}};

@@ -78,6 +78,9 @@ struct FailedCase {
     StructureDrawer draw = nullptr;      // how `structure` is drawn (drawBvh, drawCells, ...)
     std::optional<StructureView> structure;  // what the student's build returned, when it could be read
     std::optional<std::array<int, 3>> gridResolution;  // a uniform grid's: its cells per axis
+    // The registry name (accelerator_registry.h) that builds the student's structure in a worker,
+    // so the grader can record the student's walk of `rays` (failed_case_traces.h); empty: none.
+    std::string traceAccelerator;
     std::vector<CaseRay> rays;
     std::optional<CaseCells> cells;
     std::optional<CaseImage> image;

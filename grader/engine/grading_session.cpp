@@ -2,6 +2,7 @@
 
 #include "framework/core/error.h"
 #include "grader/engine/assignment_registry.h"
+#include "grader/engine/failed_case_traces.h"
 #include "grader/engine/grading_rubric.h"
 
 #include <algorithm>
@@ -155,6 +156,8 @@ GradingReport gradeWorker(const GradingOptions& options, std::vector<TestResult>
     if (!options.tests.empty())
         std::erase_if(report.tests, [&](const TestResult& r) { return !matchesAny(options.tests, r.name); });
     mergeSameNamed(report.tests);
+    // The failing cases' walks for the report's viewer, once every verdict is in.
+    if (options.unavailableWorker.empty()) recordStudentTraces(report.tests, worker);
     report.tests.insert(report.tests.begin(), leading.begin(), leading.end());
     rubric.apply(report.tests);
     if (options.writeReference) context.reference.save();

@@ -304,6 +304,7 @@ TestGroup structureSceneGroup(const StructurePlugin& plugin, std::shared_ptr<Pre
         std::optional<StructureReport> report = scoreStructure(plugin, run.phases[0], scene, structure, tag, view, gridResolution);
         // A wrong ray's viewer case: the ray through the student's structure.
         auto withStructure = [&](FailedCase failed) {
+            failed.traceAccelerator = plugin.traceAccelerator;
             if (view) {
                 failed.accelerator = plugin.drawing;
                 failed.draw = plugin.draw;

@@ -61,6 +61,9 @@ struct StructurePlugin {
     // How those pages draw the view: the function the registry entry names as its draw
     // (structure_drawing.h), named here because rtlab-grader does not link the registry.
     StructureDrawer draw = nullptr;
+    // The registry name whose accelerator builds this structure with the student's code, so the
+    // report's viewer pages can show the student's walk of a failing ray ("bvh:split=median").
+    std::string traceAccelerator;
     // The build phase: the scene in, the structure the student's code built out.
     std::function<ChildPhase(const Scene& scene)> build;
     // The worker task answering `u8 QueryKind, [Ray]` with one RawQuery per ray, and the
