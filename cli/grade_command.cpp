@@ -10,7 +10,9 @@
 #include "grader/engine/grading_session.h"
 #include "grader/engine/grading_rubric.h"
 #include "grader/engine/submission_grading.h"
+#include "viewer/report_viewers.h"
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -103,14 +105,30 @@ void writeReports(const grader::GradingReport& report, const GradeFlags& flags) 
     if (!flags.gradescope.empty()) grader::writeGradescopeResults(report, flags.gradescope);
     if (!flags.junit.empty()) grader::writeJunitReport(report, flags.junit);
     if (!flags.html.empty()) {
-        grader::writeHtmlReport(report, flags.html);
-        if (!flags.quiet) std::cout << "HTML report: " << (fs::absolute(flags.html) / "index.html").string() << "\n";
+        // The failing cases' viewers first, so the report links to folders that exist.
+        fs::create_directories(flags.html);
+        auto start = std::chrono::steady_clock::now();
+        grader::ReportLinks links = viewer::writeReportViewers(report, flags.html);
+        double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        grader::writeHtmlReport(report, flags.html, links);
+        size_t pages = 0;
+        for (const auto& [test, list] : links) pages += list.size();
+        if (!flags.quiet) {
+            std::cout << "HTML report: " << (fs::absolute(flags.html) / "index.html").string();
+            if (pages > 0) {
+                char written[96];
+                std::snprintf(written, sizeof written, " (%zu failing cases in the viewer, written in %.2f s)", pages, seconds);
+                std::cout << written;
+            }
+            std::cout << "\n";
+        }
     }
 }
 
 void grade(GradeFlags& flags) {
     grader::GradingOptions& g = flags.grading;
     if (g.sourceDir.empty()) g.sourceDir = RTLAB_REPOSITORY_DIR;
+    g.traceFailures = !flags.html.empty();
     if (g.modelsDir.empty()) g.modelsDir = (executableDir() / "models").string();
     if (!fs::is_directory(g.sourceDir + "/grader"))
         throw Error("--root " + g.sourceDir + " is not the rtlab repository (no grader/ folder)");

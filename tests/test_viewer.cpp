@@ -4,6 +4,7 @@
 // tests/viewer/browser_test.py's part.
 #include "framework/accel/accelerator.h"
 #include "framework/accel/accelerator_registry.h"
+#include "framework/accel/bvh_accelerator.h"
 #include "framework/accel/grid/grid_accelerator.h"
 #include "framework/accel/structure_drawing.h"
 #include "framework/core/error.h"
@@ -200,6 +201,7 @@ TEST_CASE("writeCaseViewer: a new, empty or viewer folder only, and student text
     view.notes = {hostile, std::string("bytes \x1b[31m\xff\xfe end")};
     view.scene = &t.scene;
     view.acceleratorName = "bvh";
+    view.draw = drawBvh;
     view.structure = t.view;
     viewer::RayCase& c = view.rays.emplace_back();
     c.ray = kRay;

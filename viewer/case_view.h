@@ -6,7 +6,8 @@
 //   view.title = "a1/closest-hits/bunny: ray 17";          // text, never markup
 //   view.notes = {"expected prim 12 at t = 3.5, got a miss"};
 //   view.scene = &scene;                                   // geometry, prim ids as PrimitiveSet numbers them
-//   view.acceleratorName = "bvh-median";                   // picks the drawing (registry's draw)
+//   view.acceleratorName = "bvh-median";                   // named on the page
+//   view.draw = structureDrawer("bvh-median");             // the registry's drawing for it
 //   view.structure = bvhStructureView(bvh);                // what the student built
 //   RayCase& r = view.rays.emplace_back();
 //   r.ray = ray;
@@ -25,6 +26,7 @@
 // shown as far as it is sound (indices out of range are dropped, counted and said in a note).
 #pragma once
 
+#include "framework/accel/structure_drawing.h"
 #include "framework/accel/structure_view.h"
 #include "framework/core/ray.h"
 #include "framework/interface/grid.h"
@@ -130,7 +132,11 @@ struct CaseView {
     std::string title;
     std::vector<std::string> notes;
     const Scene* scene = nullptr;  // not owned; null: no geometry (an a6 page)
-    std::string acceleratorName;   // the structure's --accel name; chooses its drawing
+    std::string acceleratorName;   // the structure's --accel name, as the page names it
+    // How the structure is drawn: structureDrawer(acceleratorName) (framework/accel/structure_drawing.h),
+    // or, where the registry may not be linked (rtlab-grader links no assignment code), the
+    // structure's drawing function itself; unset: drawLevels.
+    StructureDrawer draw = nullptr;
     std::optional<StructureView> structure;
     std::vector<RayCase> rays;
     std::optional<DdaCells> dda;

@@ -138,7 +138,7 @@ void addStructure(const CaseView& view, const Quantiser& q, const std::vector<st
     const StructureView& s = *view.structure;
     // The style first (with only the root drawn), to know what the budget counts; then the
     // drawing of the nodes the page carries.
-    auto draw = [&](const NodeMask& drawn) { return view.acceleratorName.empty() ? drawLevels(s, drawn) : drawStructure(view.acceleratorName, s, drawn); };
+    auto draw = [&](const NodeMask& drawn) { return view.draw ? view.draw(s, drawn) : drawLevels(s, drawn); };
     NodeMask rootOnly(s.nodes.size(), false);
     if (!rootOnly.empty()) rootOnly[0] = true;
     StructureDrawing drawing = draw(rootOnly);

@@ -237,6 +237,7 @@ SceneCase buildSceneCase(const SceneCaseRequest& request) {
     CaseView& view = out.view;
     view.scene = &scene;
     view.acceleratorName = request.acceleratorName;
+    view.draw = structureDrawer(request.acceleratorName);
     view.title = fs::path(request.scenePath).filename().string() + " through " + request.acceleratorName;
 
     AcceleratorSpec spec;

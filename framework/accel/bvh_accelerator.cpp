@@ -32,28 +32,6 @@ bool BvhAccelerator::occluded(const Ray& ray, TraversalStats& stats) const {
 
 StructureView BvhAccelerator::structure() const { return bvhStructureView(bvh_); }
 
-StructureView bvhStructureView(const Bvh& bvh) {
-    StructureView view;
-    view.primIndices = bvh.primIndices;
-    view.nodes.reserve(bvh.nodes.size());
-    for (uint32_t i = 0; i < bvh.nodes.size(); ++i) {
-        const BvhNode& node = bvh.nodes[i];
-        StructureNode out;
-        out.bounds = node.bounds;
-        if (node.isLeaf()) {
-            out.firstPrim = node.offset;
-            out.primCount = node.primCount;
-        } else {
-            out.firstChild = static_cast<uint32_t>(view.children.size());
-            out.childCount = 2;
-            view.children.push_back(i + 1);
-            view.children.push_back(node.offset);
-        }
-        view.nodes.push_back(out);
-    }
-    return view;
-}
-
 }  // namespace rtlab
 
 namespace rtlab {
@@ -70,14 +48,6 @@ BvhOptions bvhOptionsFrom(const AcceleratorParameters& parameters) {
     options.maxLeaf = parameters.integer("leaf");
     options.allAxes = parameters.word("axes") == "all";
     return options;
-}
-
-// The viewer's BVH: a depth slider over its boxes, each node's share of the SAH cost on hover.
-StructureDrawing drawBvh(const StructureView& view, const NodeMask& drawn) {
-    StructureDrawing drawing = drawLevels(view, drawn);
-    drawing.valueName = "SAH share";
-    drawing.values = sahShares(view);
-    return drawing;
 }
 
 AcceleratorType bvhType() {

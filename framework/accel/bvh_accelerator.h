@@ -10,7 +10,8 @@
 
 namespace rtlab {
 
-// A BVH as the grader's StructureView: its nodes in order, children {first, second}.
+// A BVH as the grader's StructureView: its nodes in order, children {first, second}. This and
+// drawBvh live in bvh_structure_view.cpp, which calls no assignment code (rtlab-grader links them).
 StructureView bvhStructureView(const Bvh& bvh);
 // How the viewer draws a binary BVH: boxes by level, each node's SAH share (structure_drawing.h).
 StructureDrawing drawBvh(const StructureView& view, const NodeMask& drawn);

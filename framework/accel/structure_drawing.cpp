@@ -1,6 +1,5 @@
 #include "framework/accel/structure_drawing.h"
 
-#include "framework/accel/accelerator_registry.h"
 
 #include <cmath>
 
@@ -105,11 +104,6 @@ std::vector<float> sahShares(const StructureView& view) {
         shares[i] = static_cast<float>((n.childCount > 0 ? area : n.primCount * area) / total);
     }
     return shares;
-}
-
-StructureDrawing drawStructure(const std::string& acceleratorName, const StructureView& view, const NodeMask& drawn) {
-    const AcceleratorType& type = acceleratorTypeOf(acceleratorName);
-    return type.draw ? type.draw(view, drawn) : drawLevels(view, drawn);
 }
 
 }  // namespace rtlab

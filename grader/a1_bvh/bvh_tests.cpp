@@ -1,5 +1,7 @@
 #include "grader/a1_bvh/bvh_tests.h"
 
+#include "framework/accel/bvh_accelerator.h"
+
 #include "grader/a1_bvh/a1_tests.h"
 #include "grader/a1_bvh/bvh_structure.h"
 #include "grader/a1_bvh/visit_order.h"
@@ -39,6 +41,8 @@ StructureReport checkBvh(const BvhConfig& config, const PhaseOutcome& build, con
         report.problems.push_back(problem);
         return report;
     }
+    // Numbers only: an index out of range is the viewer's to drop, never followed here.
+    report.view = bvhStructureView(*bvh);
     BvhStructureReport invariants = checkBvhStructure(*bvh, primBounds, scope == CheckScope::HitSetScene);
     report.problems = invariants.problems;
     report.problemCount = invariants.problemCount;
@@ -57,10 +61,29 @@ StructureReport checkBvh(const BvhConfig& config, const PhaseOutcome& build, con
     return report;
 }
 
+// The registry name that builds this configuration's tree with the student's code (the report's
+// viewer traces a failing ray through it); options at their defaults are left out.
+std::string registryName(const BvhOptions& o) {
+    const char* split = o.method == SplitMethod::Median        ? "median"
+                        : o.method == SplitMethod::Middle      ? "middle"
+                        : o.method == SplitMethod::EqualCounts ? "equal"
+                        : o.method == SplitMethod::SahSweep    ? "sah"
+                                                               : "buckets";
+    const BvhOptions defaults;
+    std::string name = std::string("bvh:split=") + split;
+    if (o.buckets != defaults.buckets) name += ",B=" + std::to_string(o.buckets);
+    if (o.maxLeaf != defaults.maxLeaf) name += ",leaf=" + std::to_string(o.maxLeaf);
+    if (o.allAxes) name += ",axes=all";
+    return name;
+}
+
 StructurePlugin bvhPlugin(const BvhConfig& config) {
     StructurePlugin plugin;
     plugin.assignment = config.assignment;
     plugin.label = config.label;
+    plugin.drawing = "bvh";
+    plugin.draw = drawBvh;
+    plugin.traceAccelerator = registryName(config.options);
     plugin.build = [config](const Scene& scene) {
         ByteWriter input;
         writeScene(scene, input);

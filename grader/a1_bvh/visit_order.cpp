@@ -90,9 +90,11 @@ VisitOrderVerdict judgeVisitOrder(const Bvh& bvh, const Scene& scene, const std:
     Vec3 extent = root.diagonal();
     double size = std::max({1.0, double(extent.x), double(extent.y), double(extent.z)});
     Oracle oracle(scene);
-    auto problem = [&](const Ray& ray, const std::string& what) {
+    auto problem = [&](size_t r, const std::string& what) {
         ++verdict.wrong;
-        if (verdict.problems.size() < 5) verdict.problems.push_back(describeRay(ray) + ": " + what);
+        if (verdict.problems.size() >= 5) return;
+        verdict.problems.push_back(describeRay(rays[r]) + ": " + what);
+        verdict.wrongRays.push_back(r);
     };
     for (size_t r = 0; r < rays.size(); ++r) {
         OracleRay ray = OracleRay::from(rays[r]);
@@ -104,7 +106,7 @@ VisitOrderVerdict judgeVisitOrder(const Bvh& bvh, const Scene& scene, const std:
         const std::vector<uint32_t>& prims = tested[r];
         int got = prims.empty() ? -1 : leafOf[prims.front()];
         if (got != expected.leaf) {
-            problem(rays[r], expected.leaf < 0 ? "tested primitives although the ray reaches no leaf"
+            problem(r, expected.leaf < 0 ? "tested primitives although the ray reaches no leaf"
                              : got < 0         ? "tested no primitive; the first leaf of a near-first walk is node " + std::to_string(expected.leaf)
                                                : "entered node " + std::to_string(got) + " first; a near-first walk enters node " +
                                                      std::to_string(expected.leaf) + " first (is the near child the right one?)");
@@ -121,7 +123,7 @@ VisitOrderVerdict judgeVisitOrder(const Bvh& bvh, const Scene& scene, const std:
                     char text[160];
                     std::snprintf(text, sizeof text, "entered node %d at t = %.9g, beyond the closest hit so far at t = %.9g (is tMax shrunk?)",
                                   current, *enter, best);
-                    problem(rays[r], text);
+                    problem(r, text);
                     break;
                 }
             }

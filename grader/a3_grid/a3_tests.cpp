@@ -2,6 +2,7 @@
 // DDA set-up and step), the order of cells a walk visits against an exact oracle, and the
 // generic accelerator checks (structure, hit sets, efficiency) on the hit-set scenes and the
 // teapot in a stadium.
+#include "framework/accel/grid/grid_structure_view.h"
 #include "framework/core/pcg32.h"
 #include "grader/kit/structure_tests.h"
 #include "grader/a3_grid/a3_tests.h"
@@ -11,6 +12,7 @@
 #include "grader/wire/scene_codec.h"
 #include "grader/kit/truth_table.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -378,7 +380,7 @@ TestGroup cellOrderGroup(uint64_t seed) {
         input.putVector(calls);
         group.phases.push_back(makePhase(kStubWalk, worker::kTaskDdaWalk, std::move(input)));
     }
-    group.score = [expected](const SandboxRun& run, std::vector<TestResult>& results) {
+    group.score = [expected, frames](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult result = makeResult(kA3, "a3/dda/cell-order");
         CaseTally tally(result);
         for (size_t f = 0; f < expected->size(); ++f) {
@@ -401,9 +403,25 @@ TestGroup cellOrderGroup(uint64_t seed) {
                               std::to_string(k) + " is " + (k < got.size() ? describeCell(got[k]) : "missing") + ", expected " +
                               (k < walk.expected.size() ? describeCell(walk.expected[k]) : "none");
                 }
-                tally.record("grid " + std::to_string(f) + " " + describeRay(walk.call.ray) + " [" + formatNumber(walk.call.tEnter) + ", " +
-                                 formatNumber(walk.call.tExit) + "]",
-                             problem);
+                std::string id = "grid " + std::to_string(f) + " " + describeRay(walk.call.ray) + " [" + formatNumber(walk.call.tEnter) +
+                                 ", " + formatNumber(walk.call.tExit) + "]";
+                tally.record(id, problem);
+                if (!problem.empty() && result.failedCases.size() < kViewerCasesPerTest) {
+                    // The viewer draws both walks in one grid: the expected cells, the student's, both.
+                    FailedCase failed;
+                    failed.title = "a3/dda/cell-order: grid " + std::to_string(f);
+                    failed.notes = {id + ": " + problem};
+                    CaseRay& ray = failed.rays.emplace_back();
+                    ray.ray = walk.call.ray;
+                    ray.ray.tMin = walk.call.tEnter;
+                    ray.ray.tMax = walk.call.tExit;
+                    ray.label = "the walk's ray over [tEnter, tExit]";
+                    failed.cells = CaseCells{frames[f].bounds,
+                                             {frames[f].resolution[0], frames[f].resolution[1], frames[f].resolution[2]},
+                                             walk.expected,
+                                             got};
+                    addFailedCase(result, std::move(failed));
+                }
             }
         }
         tally.finish();
@@ -421,6 +439,23 @@ struct BuiltGrid {
     GridFrame frame;
     std::vector<uint32_t> cellStart, primIndices;
 };
+
+// The grid as the viewer draws it, when its lists fit its resolution (one start per cell and
+// one more, never decreasing) and it has few enough cells to draw; otherwise nothing.
+std::optional<StructureView> gridView(const BuiltGrid& grid) {
+    constexpr size_t kMaxDrawnCells = size_t(1) << 20;
+    UniformGrid frame;
+    frame.bounds = grid.frame.bounds;
+    for (int a = 0; a < 3; ++a) {
+        if (grid.frame.resolution[a] < 1) return std::nullopt;
+        frame.resolution[a] = grid.frame.resolution[a];
+    }
+    frame.cellWidth = grid.frame.cellWidth;
+    frame.inverseWidth = grid.frame.inverseWidth;
+    if (frame.cellCount() > kMaxDrawnCells || grid.cellStart.size() != frame.cellCount() + 1) return std::nullopt;
+    if (!std::is_sorted(grid.cellStart.begin(), grid.cellStart.end())) return std::nullopt;
+    return gridStructureView(frame, grid.cellStart, grid.primIndices);
+}
 
 std::optional<BuiltGrid> readGrid(const PhaseOutcome& outcome, std::string* problem) {
     try {
@@ -491,6 +526,9 @@ StructurePlugin gridPlugin() {
     StructurePlugin plugin;
     plugin.assignment = kA3;
     plugin.label = "grid";
+    plugin.drawing = "grid";
+    plugin.draw = drawCells;
+    plugin.traceAccelerator = "grid";
     plugin.build = [options](const Scene& scene) {
         ByteWriter input;
         writeScene(scene, input);
@@ -510,6 +548,8 @@ StructurePlugin gridPlugin() {
             return report;
         }
         report.problems = gridProblems(*grid, primBounds, options);
+        report.view = gridView(*grid);
+        if (report.view) report.gridResolution = std::array<int, 3>{grid->frame.resolution[0], grid->frame.resolution[1], grid->frame.resolution[2]};
         report.summary = "resolution " + describeCell(grid->frame.resolution) + ", " + std::to_string(grid->primIndices.size()) +
                          " references (" + formatNumber(double(grid->primIndices.size()) / double(std::max<size_t>(1, primBounds.size()))) +
                          " per primitive)";

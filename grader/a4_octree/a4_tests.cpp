@@ -3,6 +3,7 @@
 // hand-derived builds and the octree stress cases, the generic accelerator checks (structure,
 // hit sets, efficiency, degenerate inputs) on the hit-set scenes and the teapot in a stadium, and
 // the order of the leaves a walk enters against an exact oracle.
+#include "framework/accel/octree/octree_accelerator.h"
 #include "framework/core/error.h"
 #include "framework/core/pcg32.h"
 #include "grader/a4_octree/a4_tests.h"
@@ -14,10 +15,12 @@
 #include "grader/a4_octree/octree_visit_order.h"
 #include "grader/wire/scene_codec.h"
 #include "grader/kit/stress_cases.h"
+#include "grader/kit/failed_ray_cases.h"
 #include "grader/kit/structure_tests.h"
 #include "grader/kit/truth_table.h"
 #include "grader/a4_octree/wire/octree_inputs.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <mutex>
@@ -565,6 +568,12 @@ StructureReport checkOctree(const PhaseOutcome& build, const Scene& scene, const
         report.problems.push_back(problem);
         return report;
     }
+    // The viewer's drawing hands each box down to the children a node names: only when every
+    // interior node names eight that exist.
+    bool childrenInRange = std::all_of(octree->nodes.begin(), octree->nodes.end(), [&](const OctreeNode& n) {
+        return n.isLeaf() || size_t(n.firstChild) + kOctreeChildren <= octree->nodes.size();
+    });
+    if (childrenInRange) report.view = octreeStructureView(*octree, octreeNodeBoxes(*octree));
     OctreeStructureReport check = checkOctreeStructure(*octree, scene, options);
     report.problems = check.problems;
     report.problemCount = check.problemCount;
@@ -582,6 +591,9 @@ StructurePlugin octreePlugin(std::shared_ptr<SceneMemo> memo) {
     StructurePlugin plugin;
     plugin.assignment = kA4;
     plugin.label = "octree";
+    plugin.drawing = "octree";
+    plugin.draw = drawLevels;
+    plugin.traceAccelerator = "octree";
     plugin.build = [options, memo](const Scene& scene) {
         memo->keep(scene);
         return buildPhase(scene, options);
@@ -644,8 +656,31 @@ TestGroup visitOrderGroup(std::shared_ptr<PreparedScene> scene) {
         std::string line = tag + std::to_string(verdict.wrong) + " of " + std::to_string(verdict.graded) +
                            " rays enter leaves out of the exact order (rays within rounding of a leaf's edge or a triangle's are not graded; " +
                            std::to_string(allowedVisitOrderErrors(verdict.graded)) + " allowed)";
-        if (verdict.wrong <= allowedVisitOrderErrors(verdict.graded)) markPassed(result, line);
-        else markFailed(result, line + "; first: " + verdict.problems.front());
+        if (verdict.wrong <= allowedVisitOrderErrors(verdict.graded)) {
+            markPassed(result, line);
+            results.push_back(std::move(result));
+            return;
+        }
+        markFailed(result, line + "; first: " + verdict.problems.front());
+        // The viewer steps through the leaves the walk entered against the exact order, in the octree it built.
+        std::vector<Bounds3f> boxes = octreeNodeBoxes(*octree);
+        for (size_t k = 0; k < verdict.wrongRays.size(); ++k) {
+            size_t r = verdict.wrongRays[k];
+            FailedCase failed;
+            failed.title = tag + "a4/octree/visit-order: ray " + std::to_string(r);
+            failed.notes = {verdict.problems[k]};
+            failed.scene = sharedScene(scene);
+            failed.accelerator = "octree";
+            failed.draw = drawLevels;
+            failed.structure = octreeStructureView(*octree, boxes);
+            CaseRay& ray = failed.rays.emplace_back();
+            ray.ray = (*rays)[r];
+            ray.label = "ray " + std::to_string(r) + ": the leaves its walk entered, in order";
+            ray.studentTrace = visitTrace(entered[r], TraceOpKind::LeafEntry);
+            if (auto expected = expectedLeafOrder(*octree, boxes, scene->test.scene, (*rays)[r]))
+                ray.expectedTrace = visitTrace(*expected, TraceOpKind::LeafEntry);
+            addFailedCase(result, std::move(failed));
+        }
         results.push_back(std::move(result));
     };
     return group;

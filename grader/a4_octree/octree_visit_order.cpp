@@ -158,7 +158,9 @@ VisitOrderVerdict judgeOctreeVisits(const Octree& octree, const Scene& scene, co
                                                  : "leaf " + std::to_string(k) + " of its walk is node " + std::to_string(got[k]) +
                                                    ", front to back it is node " + std::to_string((*expected)[k]);
         ++verdict.wrong;
-        if (verdict.problems.size() < 5) verdict.problems.push_back(describeRay(rays[r]) + ": " + what);
+        if (verdict.problems.size() >= 5) continue;
+        verdict.problems.push_back(describeRay(rays[r]) + ": " + what);
+        verdict.wrongRays.push_back(r);
     }
     return verdict;
 }

@@ -4,6 +4,8 @@
 // cost against the reference data, and the generic accelerator checks. Optional and worth no
 // points: the O(N log N) build (the same tree) and the BSP autopartition (hit sets).
 #include "grader/a5_kdtree/a5_tests.h"
+
+#include "framework/accel/kdtree/kdtree_accelerator.h"
 #include "grader/kit/image_tests.h"
 #include "grader/a5_kdtree/given_kdtree.h"
 #include "grader/kit/hit_judge.h"
@@ -358,6 +360,9 @@ StructurePlugin kdPlugin(const std::string& label, worker::KdBuildFunction funct
     StructurePlugin plugin;
     plugin.assignment = kA5;
     plugin.label = label;
+    plugin.drawing = "kdtree";
+    plugin.draw = drawPlanes;
+    plugin.traceAccelerator = function == worker::KdBuildFunction::NlogN ? "kdtree:build=nlogn" : "kdtree:build=sort";
     plugin.build = buildPhase(stub, worker::kTaskKdBuild, [options, function](ByteWriter& input) {
         input.put(options);
         input.put<uint8_t>(static_cast<uint8_t>(function));
@@ -381,7 +386,11 @@ StructurePlugin kdPlugin(const std::string& label, worker::KdBuildFunction funct
                          std::to_string(check.depth) + " (limit " + std::to_string(check.maxDepth) + "), " + std::to_string(check.references) +
                          " references (" + formatNumber(double(check.references) / double(std::max<size_t>(1, primBounds.size()))) +
                          " per primitive); every node as the rules make it";
-        if (report.problems.empty()) report.cost = kdTreeCost(*tree, options.costs);
+        if (report.problems.empty()) {
+            report.cost = kdTreeCost(*tree, options.costs);
+            // Only a valid tree: the drawing follows its child links, which may loop in another.
+            report.view = kdTreeStructureView(*tree);
+        }
         return report;
     };
     return plugin;
@@ -392,6 +401,7 @@ StructurePlugin bspPlugin() {
     StructurePlugin plugin;
     plugin.assignment = kA5;
     plugin.label = "bsp";
+    plugin.traceAccelerator = "bsp";
     plugin.build = buildPhase(kStubBsp, worker::kTaskBspBuild, [options](ByteWriter& input) { input.put(options); });
     plugin.queryTask = worker::kTaskBspQuery;
     plugin.queries = {{"closest-hits", worker::QueryKind::Closest, kStubBspClosest}, {"any-hits", worker::QueryKind::Occluded, kStubBspOccluded}};

@@ -44,6 +44,11 @@ GradingReport displaySafe(const GradingReport& report) {
         t.docs = line(t.docs);
         for (std::string& d : t.details) d = line(d);
         for (ReportImage& image : t.images) image.label = line(image.label);
+        for (FailedCase& c : t.failedCases) {
+            c.title = line(c.title);
+            for (std::string& n : c.notes) n = line(n);
+            for (CaseRay& r : c.rays) r.label = line(r.label);
+        }
     }
     return safe;
 }

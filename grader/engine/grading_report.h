@@ -5,6 +5,7 @@
 #include "grader/engine/test_result.h"
 
 #include <cstdint>
+#include <map>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -55,7 +56,16 @@ GradingReport readJsonReport(const std::string& path);
 // stdout_visibility, tests[{name, number, score, max_score, status, output, visibility, tags}]).
 void writeGradescopeResults(const GradingReport& report, const std::string& path);
 void writeJunitReport(const GradingReport& report, const std::string& path);
-// DIR/index.html with every test's messages; images are copied into DIR/images.
-void writeHtmlReport(const GradingReport& report, const std::string& directory);
+// A link from a failing test to the viewer page of one of its cases (the viewer writes the pages,
+// viewer/report_viewers.h): its words and its address relative to the report's index.html.
+struct ReportLink {
+    std::string label;
+    std::string href;
+};
+using ReportLinks = std::map<std::string, std::vector<ReportLink>>;  // by test name
+
+// DIR/index.html with every test's messages; images are copied into DIR/images. Each test
+// named in viewerLinks gets an "open in viewer" link per entry.
+void writeHtmlReport(const GradingReport& report, const std::string& directory, const ReportLinks& viewerLinks = {});
 
 }  // namespace rtlab::grader

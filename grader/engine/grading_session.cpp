@@ -2,6 +2,7 @@
 
 #include "framework/core/error.h"
 #include "grader/engine/assignment_registry.h"
+#include "grader/engine/failed_case_traces.h"
 #include "grader/engine/grading_rubric.h"
 
 #include <algorithm>
@@ -33,6 +34,7 @@ void mergeSameNamed(std::vector<TestResult>& results) {
         m.seconds += r.seconds;
         m.details.insert(m.details.end(), r.details.begin(), r.details.end());
         m.images.insert(m.images.end(), r.images.begin(), r.images.end());
+        for (FailedCase& c : r.failedCases) addFailedCase(m, std::move(c));
         if (m.status == r.status && m.status != TestStatus::Failed) continue;  // all passed, or none started
         // Mixed: a failure's reason says more than "not started", which says more than nothing.
         if (m.status != TestStatus::Failed && (r.status == TestStatus::Failed || m.status == TestStatus::Passed)) m.reason = r.reason;
@@ -167,6 +169,8 @@ GradingReport gradeWorker(const GradingOptions& options, std::vector<TestResult>
     if (!options.tests.empty())
         std::erase_if(report.tests, [&](const TestResult& r) { return !matchesAny(options.tests, r.name); });
     mergeSameNamed(report.tests);
+    // The failing cases' walks for the report's viewer, once every verdict is in.
+    if (options.traceFailures && options.unavailableWorker.empty()) recordStudentTraces(report.tests, worker);
     report.tests.insert(report.tests.begin(), leading.begin(), leading.end());
     rubric.apply(report.tests);
     if (options.writeReference) context.reference.save();

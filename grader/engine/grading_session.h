@@ -27,6 +27,9 @@ struct GradingOptions {
     CompileLimits compile;   // for a submission's build
     bool writeReference = false;  // record SAH costs and work per ray into grader/reference/
     bool progress = true;         // progress lines on stderr when it is a terminal
+    // Trace the student's walk of the failing cases' rays for the HTML report's viewer: one
+    // more sandboxed run, after the verdicts, that nothing else reads.
+    bool traceFailures = false;
     std::string implementation;   // what is graded, for the reports
 };
 

@@ -1,7 +1,8 @@
 // The HTML report: a summary table and, per test, its messages (failing rays with expected
 // and actual answers, SAH costs, work per ray) and for image tests the render, the POV-Ray
-// reference and the difference heat map side by side. Self-contained: images are copied
-// next to index.html.
+// reference and the difference heat map side by side, with the heat map's legend once under
+// them; for a failing test, its "open in viewer" links (viewer/report_viewers.h writes the
+// pages). Self-contained: images are copied next to index.html, viewers are in viewer/.
 #include "framework/core/error.h"
 #include "framework/verification/image_compare.h"
 #include "grader/engine/grading_report.h"
@@ -51,7 +52,7 @@ std::string heatMapLegend() {
 
 }  // namespace
 
-void writeHtmlReport(const GradingReport& untrusted, const std::string& directory) {
+void writeHtmlReport(const GradingReport& untrusted, const std::string& directory, const ReportLinks& viewerLinks) {
     const GradingReport report = displaySafe(untrusted);
     fs::create_directories(fs::path(directory) / "images");
     std::ostringstream html;
@@ -69,7 +70,8 @@ void writeHtmlReport(const GradingReport& untrusted, const std::string& director
     }
     html << "</table>\n";
     int imageNumber = 0;
-    for (const TestResult& t : report.tests) {
+    for (size_t i = 0; i < report.tests.size(); ++i) {
+        const TestResult& t = report.tests[i];
         std::string status = testStatusName(t.status);
         html << "<h2 id=\"" << anchor(t.name) << "\">" << escapeMarkup(t.name) << " <span class=\"" << anchor(status) << "\">" << status
              << "</span></h2>\n";
@@ -77,6 +79,15 @@ void writeHtmlReport(const GradingReport& untrusted, const std::string& director
         std::string output;
         for (const std::string& line : t.details) output += (output.empty() ? "" : "\n") + line;
         if (!output.empty()) html << "<pre>" << escapeMarkup(output) << "</pre>\n";
+        // Keyed by the name as graded: the links were made from the report before displaySafe.
+        if (auto links = viewerLinks.find(untrusted.tests[i].name); links != viewerLinks.end()) {
+            html << "<ul class=\"viewer-links\">\n";
+            for (const ReportLink& link : links->second) {
+                if (link.href.empty()) html << "<li>" << escapeMarkup(link.label) << "</li>\n";
+                else html << "<li><a href=\"" << escapeMarkup(link.href) << "\">open in viewer</a>: " << escapeMarkup(link.label) << "</li>\n";
+            }
+            html << "</ul>\n";
+        }
         if (t.images.empty()) continue;
         html << "<div class=\"images\">\n";
         for (const ReportImage& image : t.images) {

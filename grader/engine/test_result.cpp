@@ -11,6 +11,16 @@ const char* testStatusName(TestStatus status) {
     return "?";
 }
 
+void addFailedCase(TestResult& result, FailedCase failed) {
+    if (result.failedCases.size() >= kViewerCasesPerTest) return;
+    if (failed.rays.size() > kViewerRaysPerCase) failed.rays.resize(kViewerRaysPerCase);
+    if (failed.cells) {
+        if (failed.cells->expected.size() > kViewerCellsPerWalk) failed.cells->expected.resize(kViewerCellsPerWalk);
+        if (failed.cells->student.size() > kViewerCellsPerWalk) failed.cells->student.resize(kViewerCellsPerWalk);
+    }
+    result.failedCases.push_back(std::move(failed));
+}
+
 void CaseTally::record(bool passed, const std::string& detail, const std::string& reason) {
     ++total_;
     if (passed) {

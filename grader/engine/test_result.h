@@ -2,6 +2,8 @@
 // report"). Scores are filled in from the rubric after the test ran.
 #pragma once
 
+#include "grader/engine/failed_case.h"
+
 #include <string>
 #include <vector>
 
@@ -25,6 +27,8 @@ struct TestResult {
     std::string reason;                // one line; empty when passed
     std::vector<std::string> details;  // further lines: failing rays, costs, per-scene results
     std::vector<ReportImage> images;
+    // The first few failing cases as data for the viewer (failed_case.h); empty when passed.
+    std::vector<FailedCase> failedCases;
     double seconds = 0.0;
 
     // From the rubric.
@@ -38,6 +42,10 @@ struct TestResult {
 // The file name ending of the heat maps image tests write; the HTML report puts the colour
 // legend under them (the suffix survives a report's JSON round trip, a flag would not).
 inline constexpr const char* kHeatMapFileSuffix = "-heatmap.png";
+
+// Keeps a failing case for the report's viewer links unless the test has kViewerCasesPerTest;
+// its rays are cut to kViewerRaysPerCase and its cells to kViewerCellsPerWalk.
+void addFailedCase(TestResult& result, FailedCase failed);
 
 // Passed when every case passed; otherwise failed with partial credit passed/total.
 void setFromCounts(TestResult& result, size_t passed, size_t total, const std::string& firstFailure);

@@ -70,8 +70,8 @@ double meanWork(const std::vector<worker::RawQuery>& answers) {
     return answers.empty() ? 0.0 : sum / double(answers.size());
 }
 
-// Judges closest-hit answers ray by ray; fills result, returns the number of wrong rays.
-size_t judgeClosestHits(PreparedScene& scene, const std::vector<worker::RawQuery>& answers, TestResult& result, const std::string& tag) {
+size_t judgeClosestHits(PreparedScene& scene, const std::vector<worker::RawQuery>& answers, TestResult& result, const std::string& tag,
+                        std::vector<WrongRay>* wrongRays) {
     size_t wrong = 0;
     std::string first;
     for (size_t i = 0; i < answers.size(); ++i) {
@@ -79,6 +79,7 @@ size_t judgeClosestHits(PreparedScene& scene, const std::vector<worker::RawQuery
         std::string problem = scene.judge->judgeClosest(i, ray, scene.rays.mustHit[i], HitAnswer{answers[i].prim, answers[i].t});
         if (problem.empty()) continue;
         std::string line = tag + "ray " + std::to_string(i) + " (" + rayKindName(scene.rays.kinds[i]) + ") " + describeRay(ray) + ": " + problem;
+        if (wrongRays && wrongRays->size() < kViewerCasesPerTest) wrongRays->push_back({i, problem});
         if (wrong++ < 5) result.details.push_back(line);
         if (first.empty()) first = line;
     }
@@ -87,7 +88,8 @@ size_t judgeClosestHits(PreparedScene& scene, const std::vector<worker::RawQuery
     return wrong;
 }
 
-size_t judgeOcclusion(PreparedScene& scene, const std::vector<worker::RawQuery>& answers, TestResult& result, const std::string& tag) {
+size_t judgeOcclusion(PreparedScene& scene, const std::vector<worker::RawQuery>& answers, TestResult& result, const std::string& tag,
+                      std::vector<WrongRay>* wrongRays) {
     size_t wrong = 0;
     std::string first;
     for (size_t i = 0; i < answers.size(); ++i) {
@@ -95,6 +97,7 @@ size_t judgeOcclusion(PreparedScene& scene, const std::vector<worker::RawQuery>&
         std::string problem = scene.anyHitJudge->judgeOccluded(i, ray, false, answers[i].prim != 0);
         if (problem.empty()) continue;
         std::string line = tag + "ray " + std::to_string(i) + " (" + rayKindName(scene.rays.kinds[i]) + ") " + describeRay(ray) + ": " + problem;
+        if (wrongRays && wrongRays->size() < kViewerCasesPerTest) wrongRays->push_back({i, problem});
         if (wrong++ < 5) result.details.push_back(line);
         if (first.empty()) first = line;
     }

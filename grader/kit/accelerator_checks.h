@@ -59,11 +59,18 @@ std::optional<std::vector<worker::RawQuery>> readQueries(const PhaseOutcome& out
 // Mean framework-counted work per query (box tests and cell steps plus primitive tests).
 double meanWork(const std::vector<worker::RawQuery>& answers);
 
+// A ray judged wrong: its index in the set and what was wrong, for the report's viewer links.
+struct WrongRay {
+    size_t index;
+    std::string problem;
+};
+
 // Judge closest-hit or any-hit answers ray by ray; fill result; return the wrong rays' count.
+// With `wrongRays`, the first kViewerCasesPerTest wrong rays are listed there.
 size_t judgeClosestHits(PreparedScene& scene, const std::vector<worker::RawQuery>& answers, TestResult& result,
-                        const std::string& tag);
+                        const std::string& tag, std::vector<WrongRay>* wrongRays = nullptr);
 size_t judgeOcclusion(PreparedScene& scene, const std::vector<worker::RawQuery>& answers, TestResult& result,
-                      const std::string& tag);
+                      const std::string& tag, std::vector<WrongRay>* wrongRays = nullptr);
 
 // The efficiency verdict on CPU time the kernel counted for `phases` worker phases that answered
 // `queries` queries: within kBruteForceShare of the scene's timed brute force over as many

@@ -95,6 +95,13 @@ const std::vector<HitJudge::Candidate>& HitJudge::candidates(size_t index, const
     return *cache_[index];
 }
 
+std::optional<HitJudge::Candidate> HitJudge::closestCandidate(size_t index, const Ray& ray) {
+    std::optional<Candidate> best;
+    for (const Candidate& c : candidates(index, ray))
+        if (c.t > ray.tMin && c.t <= ray.tMax && (!best || c.t < best->t)) best = c;
+    return best;
+}
+
 namespace {
 
 template <typename Candidates>

@@ -47,6 +47,9 @@ public:
     };
     // Every candidate of ray `index` (computed once, then cached).
     const std::vector<Candidate>& candidates(size_t index, const Ray& ray);
+    // The oracle's closest hit of ray `index` in (tMin, tMax], or nothing: what a viewer shows as
+    // the expected answer (the judge itself accepts any tied primitive).
+    std::optional<Candidate> closestCandidate(size_t index, const Ray& ray);
 
 private:
     std::vector<Candidate> findCandidates(const Ray& ray) const;

@@ -80,8 +80,8 @@ TestGroup renderGroup(const ImageConfig& config, std::shared_ptr<ImageJob> job, 
                 writeErrorHeatMap(render, job->reference, base + kHeatMapFileSuffix);
                 result.images = {{"your render", fs::absolute(base + "-render.png").string()},
                                  {"POV-Ray reference", fs::absolute(base + "-reference.png").string()},
-                                 {"difference in 16-bit codes (colours: " + errorHeatMapLegend() + ")",
-                                  fs::absolute(base + kHeatMapFileSuffix).string()}};
+                                 // The HTML report draws the colours' legend under the images once.
+                                 {"difference in 16-bit codes", fs::absolute(base + kHeatMapFileSuffix).string()}};
                 std::string summary = percent(c.shareOverThreshold()) + " of pixels off by more than " +
                                       std::to_string(int(kImageThresholdCodes)) + " codes (allowed " + percent(kImageMaxShareOver) +
                                       "); mean error " + std::to_string(c.meanCodes()) + " codes, max " + std::to_string(c.maxCodes()) +
@@ -92,6 +92,16 @@ TestGroup renderGroup(const ImageConfig& config, std::shared_ptr<ImageJob> job, 
                 result.status = passed ? TestStatus::Passed : TestStatus::Failed;
                 result.fraction = passed ? 1.0 : 0.0;
                 result.reason = passed ? "" : summary;
+                if (!passed) {
+                    // The viewer opens the render at its worst pixel, with that pixel's camera ray.
+                    FailedCase failed;
+                    failed.title = result.name + ": the worst pixel";
+                    failed.notes = {summary};
+                    failed.scene = std::shared_ptr<const Scene>(job, &job->scene);
+                    failed.image = CaseImage{result.images[0].path, result.images[1].path, result.images[2].path, job->camera,
+                                             render.width, render.height, std::array<int, 2>{c.maxX, c.maxY}, summary};
+                    addFailedCase(result, std::move(failed));
+                }
                 requireFollowedStructure(context, result);
             } catch (const std::exception& e) {
                 result.status = TestStatus::Failed;

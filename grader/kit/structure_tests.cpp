@@ -1,6 +1,7 @@
 #include "grader/kit/structure_tests.h"
 
 #include "framework/core/error.h"
+#include "grader/kit/failed_ray_cases.h"
 
 #include <algorithm>
 #include <cmath>
@@ -35,8 +36,9 @@ const std::vector<Ray>& raysOf(const PreparedScene& scene, const QueryTest& quer
 // A given-structure phase's answers judged ray by ray (given_structure.h) and folded into the
 // hit-set test `result`: a wrong ray fails it as a wrong ray of the scene does. Returns how many
 // answers hit primitives the structure does not hold along their ray.
-size_t scoreGivenAnswers(PreparedScene& scene, const GivenStructureJudge& judge, const QueryTest& test, const PhaseOutcome& outcome,
-                         TestResult& result, const std::string& tag) {
+size_t scoreGivenAnswers(const std::shared_ptr<PreparedScene>& prepared, const GivenStructureJudge& judge, const QueryTest& test,
+                         const PhaseOutcome& outcome, TestResult& result, const std::string& tag) {
+    PreparedScene& scene = *prepared;
     const std::string where = tag + "on a structure the grader built, with primitives left out of some leaves: ";
     bool occluded = test.kind == worker::QueryKind::Occluded;
     const std::vector<Ray>& rays = raysOf(scene, test);
@@ -59,6 +61,16 @@ size_t scoreGivenAnswers(PreparedScene& scene, const GivenStructureJudge& judge,
         if (problem.empty()) continue;
         unheld += problem.find(GivenStructureJudge::kNotInStructure) != std::string::npos;
         std::string line = where + "ray " + std::to_string(i) + " " + describeRay(rays[i]) + ": " + problem;
+        // The viewer shows the ray and the answer; what the grader's structure held is in the note.
+        if (result.failedCases.size() < kViewerCasesPerTest) {
+            WrongRay wrongRay{i, where + problem};
+            std::string title = tag + test.name + " on the grader's structure: ray " + std::to_string(i);
+            FailedCase failed = occluded ? anyHitCase(prepared, rays[i], wrongRay, a.prim != 0, title)
+                                         : closestHitCase(prepared, *scene.judge, rays[i], wrongRay, a, title);
+            // The oracle's hit may be one the grader's structure left out: the note says what was due.
+            failed.rays.back().expected = CaseAnswer{};
+            addFailedCase(result, std::move(failed));
+        }
         if (wrong++ < 5) result.details.push_back(line);
         if (first.empty()) first = line;
     }
@@ -109,12 +121,28 @@ std::optional<std::vector<std::vector<uint32_t>>> readVisits(const PhaseOutcome&
 }
 
 // The structure verdict; the report is kept for the cost and visit-order tests.
-std::optional<StructureReport> scoreStructure(const StructurePlugin& plugin, const PhaseOutcome& build, const PreparedScene& scene,
-                                              TestResult& structure, const std::string& tag) {
+std::optional<StructureReport> scoreStructure(const StructurePlugin& plugin, const PhaseOutcome& build,
+                                              const std::shared_ptr<PreparedScene>& scene, TestResult& structure, const std::string& tag,
+                                              std::optional<StructureView>& view, std::optional<std::array<int, 3>>& gridResolution) {
     if (failedPhaseResult(build, structure)) return std::nullopt;
-    StructureReport report = plugin.check(build, scene.primBounds, CheckScope::HitSetScene);
+    StructureReport report = plugin.check(build, scene->primBounds, CheckScope::HitSetScene);
     for (const std::string& p : report.problems) structure.details.push_back(tag + p);
+    if (!plugin.drawing.empty()) {
+        view = report.view;
+        gridResolution = report.gridResolution;
+    }
     if (!report.problems.empty()) {
+        FailedCase failed;
+        failed.title = tag + plugin.assignment + "/" + plugin.label + "/structure";
+        for (size_t k = 0; k < report.problems.size() && k < kViewerRaysPerCase; ++k) failed.notes.push_back(report.problems[k]);
+        failed.scene = sharedScene(scene);
+        if (view) {
+            failed.accelerator = plugin.drawing;
+            failed.draw = plugin.draw;
+            failed.structure = view;
+            failed.gridResolution = gridResolution;
+        }
+        addFailedCase(structure, std::move(failed));
         size_t count = std::max(report.problemCount, report.problems.size());
         markFailed(structure, (count > 1 ? std::to_string(count) + " problems; first: " : "") + tag + report.problems.front());
         return std::nullopt;
@@ -145,8 +173,9 @@ void scoreCost(const CostTest& test, double cost, const std::optional<StructureR
     }
 }
 
-void scoreVisitOrder(const StructureReport* report, const PhaseOutcome& outcome, const PreparedScene& scene,
-                     const std::vector<Ray>& rays, TestResult& result, const std::string& tag) {
+void scoreVisitOrder(const StructureReport* report, const PhaseOutcome& outcome, const std::shared_ptr<PreparedScene>& prepared,
+                     const std::vector<Ray>& rays, TestResult& result, const std::string& tag, const std::function<FailedCase(FailedCase)>& withStructure) {
+    const PreparedScene& scene = *prepared;
     auto tested = readVisits(outcome, rays.size(), scene.primBounds.size(), result);
     if (!tested) return;
     if (!report) {
@@ -158,8 +187,23 @@ void scoreVisitOrder(const StructureReport* report, const PhaseOutcome& outcome,
     std::string line = tag + std::to_string(verdict.wrong) + " of " + std::to_string(verdict.graded) +
                        " rays visit leaves out of order (rays meeting a box edge within rounding are not graded; " +
                        std::to_string(allowedVisitOrderErrors(verdict.graded)) + " allowed)";
-    if (verdict.wrong <= allowedVisitOrderErrors(verdict.graded)) markPassed(result, line);
-    else markFailed(result, line + "; first: " + verdict.problems.front());
+    if (verdict.wrong <= allowedVisitOrderErrors(verdict.graded)) {
+        markPassed(result, line);
+        return;
+    }
+    markFailed(result, line + "; first: " + verdict.problems.front());
+    for (size_t k = 0; k < verdict.wrongRays.size(); ++k) {
+        size_t r = verdict.wrongRays[k];
+        FailedCase failed;
+        failed.title = tag + "visit-order: ray " + std::to_string(r);
+        failed.notes.push_back(verdict.problems[k]);
+        failed.scene = sharedScene(prepared);
+        CaseRay& ray = failed.rays.emplace_back();
+        ray.ray = rays[r];
+        ray.label = "ray " + std::to_string(r) + ": the primitives its closest-hit walk tested, in order";
+        ray.studentTrace = visitTrace((*tested)[r], TraceOpKind::PrimitiveTest);
+        addFailedCase(result, withStructure(std::move(failed)));
+    }
 }
 
 // --- Degenerate inputs ------------------------------------------------------------------------
@@ -255,7 +299,20 @@ TestGroup structureSceneGroup(const StructurePlugin& plugin, std::shared_ptr<Pre
             return r;
         };
         TestResult structure = result("structure");
-        std::optional<StructureReport> report = scoreStructure(plugin, run.phases[0], *scene, structure, tag);
+        std::optional<StructureView> view;  // the student's, for the viewer cases
+        std::optional<std::array<int, 3>> gridResolution;
+        std::optional<StructureReport> report = scoreStructure(plugin, run.phases[0], scene, structure, tag, view, gridResolution);
+        // A wrong ray's viewer case: the ray through the student's structure.
+        auto withStructure = [&](FailedCase failed) {
+            failed.traceAccelerator = plugin.traceAccelerator;
+            if (view) {
+                failed.accelerator = plugin.drawing;
+                failed.draw = plugin.draw;
+                failed.structure = view;
+                failed.gridResolution = gridResolution;
+            }
+            return failed;
+        };
 
         // Every traversal's answers, judged ray by ray on the student's structure and on the
         // grader's; efficiency needs all of them right.
@@ -273,9 +330,16 @@ TestGroup structureSceneGroup(const StructurePlugin& plugin, std::shared_ptr<Pre
                 allAnswered = false;
                 continue;
             }
-            wrongHits += occluded ? judgeOcclusion(*scene, *answers, hitTests.back(), tag)
-                                  : judgeClosestHits(*scene, *answers, hitTests.back(), tag);
-            if (givenJudge) unheld += scoreGivenAnswers(*scene, *givenJudge, test, run.phases[firstGiven + q], hitTests.back(), tag);
+            std::vector<WrongRay> wrongRays;
+            wrongHits += occluded ? judgeOcclusion(*scene, *answers, hitTests.back(), tag, &wrongRays)
+                                  : judgeClosestHits(*scene, *answers, hitTests.back(), tag, &wrongRays);
+            for (const WrongRay& w : wrongRays) {
+                const Ray& ray = raysOf(*scene, test)[w.index];
+                std::string title = tag + test.name + ": ray " + std::to_string(w.index);
+                addFailedCase(hitTests.back(), withStructure(occluded ? anyHitCase(scene, ray, w, (*answers)[w.index].prim != 0, title)
+                                                                      : closestHitCase(scene, *scene->judge, ray, w, (*answers)[w.index], title)));
+            }
+            if (givenJudge) unheld += scoreGivenAnswers(scene, *givenJudge, test, run.phases[firstGiven + q], hitTests.back(), tag);
             if (test.kind == worker::QueryKind::Closest) closestAnswers = *answers;
             if (occluded) occludedAnswers = *answers;
         }
@@ -348,7 +412,7 @@ TestGroup structureSceneGroup(const StructurePlugin& plugin, std::shared_ptr<Pre
 
         TestResult visits = result("visit-order");
         if (!plugin.visitsTask.empty()) {
-            scoreVisitOrder(report ? &*report : nullptr, run.phases[firstGiven - 1], *scene, *visitRays, visits, tag);
+            scoreVisitOrder(report ? &*report : nullptr, run.phases[firstGiven - 1], scene, *visitRays, visits, tag, withStructure);
             if (structure.status == TestStatus::NotStarted) failLike(visits, structure, structure.reason);
         }
 

@@ -7,6 +7,7 @@
 // named <assignment>/<label>/<test>; reference entries <label>/<scene>.
 #pragma once
 
+#include "framework/accel/structure_drawing.h"
 #include "grader/kit/accelerator_checks.h"
 #include "grader/kit/given_structure.h"
 #include "grader/kit/stress_scenes.h"
@@ -26,6 +27,10 @@ struct StructureReport {
     std::vector<std::string> problems;  // empty: the structure is valid (the first few)
     size_t problemCount = 0;            // all of them, when more than listed
     std::string summary;                // one line for a valid one: sizes, references per primitive
+    // The structure as the viewer draws it, also when invalid, as far as it can be read without
+    // following an index out of range (unset: it cannot); the report's viewer links show it.
+    std::optional<StructureView> view;
+    std::optional<std::array<int, 3>> gridResolution;  // a uniform grid's view: its cells per axis
     // Set for a valid structure by plugins that have these tests:
     std::optional<double> cost;  // the grader's own cost of the structure (its SAH cost)
     // Judges the primitives each ray's closest-hit traversal tested, in order, on this structure.
@@ -52,6 +57,13 @@ struct CostTest {
 struct StructurePlugin {
     std::string assignment;  // "a3"
     std::string label;       // "grid"
+    std::string drawing;     // the structure's name in the report's viewer pages ("bvh")
+    // How those pages draw the view: the function the registry entry names as its draw
+    // (structure_drawing.h), named here because rtlab-grader does not link the registry.
+    StructureDrawer draw = nullptr;
+    // The registry name whose accelerator builds this structure with the student's code, so the
+    // report's viewer pages can show the student's walk of a failing ray ("bvh:split=median").
+    std::string traceAccelerator;
     // The build phase: the scene in, the structure the student's code built out.
     std::function<ChildPhase(const Scene& scene)> build;
     // The worker task answering `u8 QueryKind, [Ray]` with one RawQuery per ray, and the

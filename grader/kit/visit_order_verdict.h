@@ -14,6 +14,7 @@ struct VisitOrderVerdict {
     size_t graded = 0;               // rays judged (the others meet a box edge within rounding)
     size_t wrong = 0;
     std::vector<std::string> problems;  // the first few, one line each
+    std::vector<size_t> wrongRays;      // their rays' indices, for the report's viewer links
 };
 
 // How many wrong rays a correct traversal may still show (primitive edges the double-precision

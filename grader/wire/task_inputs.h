@@ -15,6 +15,15 @@ namespace rtlab::grader::worker {
 
 inline constexpr const char* kTaskNone = "none";
 inline constexpr const char* kTaskRender = "render";  // scene, RenderRequest -> w, h, c, [f32]
+// The report's viewer pages: the student's walk of a failing case's rays, through the structure
+// the student's code builds under a registry name. Scene, TraceRequest, [Ray], [u8 any-hit] ->
+// per ray the bytes of a TraversalTrace (traversal_trace_format.h), which the grader decodes as
+// untrusted data.
+inline constexpr const char* kTaskTraceRays = "trace-rays";
+// The most operations a trace keeps (the rest are counted, not kept), and so the most bytes one
+// may take: the grader reads no more.
+inline constexpr uint32_t kMaxTraceOps = 1u << 16;
+inline constexpr uint64_t kMaxTraceBytes = 24 + 40 * uint64_t(kMaxTraceOps);
 
 // What a structure's query task answers for each ray of a phase.
 enum class QueryKind : uint8_t {
@@ -43,6 +52,11 @@ struct RenderRequest {
     char accelerator[40];  // a registry name (accelerator_registry.h), NUL-terminated
 };
 
-static_assert(std::is_trivially_copyable_v<RawQuery> && std::is_trivially_copyable_v<RenderRequest>);
+struct TraceRequest {
+    char accelerator[40];  // a registry name (accelerator_registry.h), NUL-terminated
+};
+
+static_assert(std::is_trivially_copyable_v<RawQuery> && std::is_trivially_copyable_v<RenderRequest> &&
+              std::is_trivially_copyable_v<TraceRequest>);
 
 }  // namespace rtlab::grader::worker

@@ -3,13 +3,14 @@
 SwiftShader's WebGL, driven by Selenium with Debian's chromium-driver.
 
 For every kind of viewer page (each structure with a ray, a pixel of a render, a6's samplers,
-the DDA case and the hostile case of viewer_test_cases): the page loads from file:// with no
+the DDA case, the hostile case and the hostile report of viewer_test_cases): the page loads from file:// with no
 console error and says it is ready. For every page with a ray: the steps the page lists and
 steps through are the trace file's, operation for operation (the trace written by
 `rtlab-solution view --trace-out`, decoded here by this file's own reader of the format of
 framework/accel/traversal_trace_format.h). Screenshots are checked by their pixels: the hit
 marker lies where the hit projects through the page's camera, and the DDA case's cells have the
-colours of the walks they belong to. The hostile page runs nothing and shows its markup as text.
+colours of the walks they belong to. The hostile page runs nothing and shows its markup as text;
+so does the hostile grading report, and the viewer its "open in viewer" link opens.
 
 Usage: browser_test.py BUILD_DIR SOURCE_DIR [--screenshots DIR]
   --screenshots DIR also writes the screenshots the docs show (docs/images/viewer-*.png come
@@ -248,6 +249,41 @@ def check_hostile(browser, folder, shots):
     check(not errors, f"hostile: console errors (a blocked script would say so): {errors}")
 
 
+def check_report(browser, folder, passing, shots):
+    """The hostile report (viewer_test_cases): its markup shows as text and runs nothing, and its
+    one failing case's "open in viewer" link opens a viewer that runs nothing either. A passing
+    report writes no viewer data."""
+    check(not os.path.exists(os.path.join(passing, "viewer")), "a passing report wrote viewer data")
+    browser.get("about:blank")
+    browser.get_log("browser")
+    browser.get("file://" + os.path.abspath(os.path.join(folder, "index.html")))
+    screenshot(browser, os.path.join(shots, "report.png"))
+    check(browser.execute_script("return window.__pwned === undefined"), "report: a script from the data ran")
+    check(browser.execute_script("return document.getElementById('injected') === null && document.querySelectorAll('img, textarea').length === 0"),
+          "report: markup from the data became elements")
+    links = browser.find_elements(By.LINK_TEXT, "open in viewer")
+    check(len(links) == 1, f"report: {len(links)} 'open in viewer' links, expected 1 (one failing case)")
+    hrefs = [a.get_attribute("href") for a in browser.find_elements(By.TAG_NAME, "a")]
+    check(not any(h and h.startswith("javascript:") for h in hrefs), f"report: a javascript: link from the data: {hrefs}")
+    errors = [e["message"] for e in browser.get_log("browser") if e["level"] in ("SEVERE", "ERROR")]
+    check(not errors, f"report: console errors: {errors}")
+    if not links:
+        return
+    links[0].click()
+    for _ in range(300):
+        if browser.execute_script("return document.body && document.body.dataset.state") not in (None, "loading"):
+            break
+        time.sleep(0.1)
+    check(browser.execute_script("return document.body.dataset.state") == "ready", "report: the linked viewer is not ready")
+    wait_for_frame(browser)
+    screenshot(browser, os.path.join(shots, "report-viewer.png"))
+    check(browser.execute_script("return window.__pwned === undefined"), "report's viewer: a script from the data ran")
+    check(browser.execute_script("return document.getElementById('injected') === null"), "report's viewer: markup from the data became elements")
+    check("</textarea>" in browser.find_element(By.ID, "title").text, "report's viewer: the title is not shown as text")
+    errors = [e["message"] for e in browser.get_log("browser") if e["level"] in ("SEVERE", "ERROR")]
+    check(not errors, f"report's viewer: console errors: {errors}")
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("build")
@@ -360,6 +396,7 @@ def main():
         if dda_cells:
             check_dda(browser, os.path.join(out, "cases", "dda"), dda_cells, shots)
             check_hostile(browser, os.path.join(out, "cases", "hostile"), shots)
+            check_report(browser, os.path.join(out, "cases", "report"), os.path.join(out, "cases", "passing"), shots)
     finally:
         browser.quit()
         shutil.rmtree(profile, ignore_errors=True)

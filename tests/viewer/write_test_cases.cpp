@@ -4,11 +4,18 @@
 //               the wrong way from its fourth cell on, so the page has expected-only, student-only
 //               and shared cells, each drawn where browser_test.py projects it;
 //   hostile/    what a hostile worker could return: markup and script in every string, a trace
-//               with NaN, infinite and out-of-range numbers, a structure whose links run wild.
+//               with NaN, infinite and out-of-range numbers, a structure whose links run wild;
+//   report/     an HTML grading report with one failing test whose every student-controlled
+//               string (reason, details, printed output, its viewer case's words) carries markup
+//               and script, linked to its viewer as `rtlab grade --html` links it;
+//   passing/    a report whose tests all pass: no viewer folder.
 // Usage: viewer_test_cases OUTPUT_DIR (prints the cells of the DDA case as JSON on stdout).
+#include "framework/accel/bvh_accelerator.h"
 #include "framework/core/error.h"
 #include "framework/scene/gltf_loader.h"
 #include "grader/a3_grid/grid_oracle.h"
+#include "grader/engine/grading_report.h"
+#include "viewer/report_viewers.h"
 #include "viewer/case_view.h"
 
 #include <cmath>
@@ -59,6 +66,7 @@ void writeHostile(const fs::path& dir, const fs::path& sourceDir) {
     view.notes = {kHostile, "javascript:alert(1)", std::string("\x1b]0;title\x07 and \xc3\x28 invalid UTF-8")};
     view.scene = &scene;
     view.acceleratorName = "bvh";
+    view.draw = drawBvh;
     // A structure with a cycle, a link out of range and a leaf whose list runs past the end.
     StructureView s;
     float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
@@ -89,6 +97,49 @@ void writeHostile(const fs::path& dir, const fs::path& sourceDir) {
     viewer::writeCaseViewer(dir, view);
 }
 
+// Through the same calls as `rtlab grade --html` (cli/grade_command.cpp).
+void writeReport(const fs::path& dir, const grader::GradingReport& report) {
+    fs::create_directories(dir);
+    grader::writeHtmlReport(report, dir.string(), viewer::writeReportViewers(report, dir));
+}
+
+void writeHostileReport(const fs::path& dir, const fs::path& sourceDir) {
+    const std::string hostile = std::string(kHostile) + "</textarea><a href=\"javascript:window.__pwned=3\">javascript:alert(1)</a>";
+    grader::GradingReport report;
+    report.implementation = hostile;
+    report.studentOutput = hostile + "\n<script>window.__pwned=4</script>";
+    grader::TestResult& t = report.tests.emplace_back();
+    t.assignment = "a1";
+    t.name = "a1/bvh/closest-hits";
+    t.reason = hostile;
+    t.details = {hostile, "ray 0 " + hostile};
+    grader::FailedCase failed;
+    failed.title = hostile;
+    failed.notes = {hostile, "javascript:alert(1)"};
+    failed.scene = std::make_shared<Scene>(loadGltf((sourceDir / "scenes" / "cornell-box.gltf").string()));
+    grader::CaseRay& r = failed.rays.emplace_back();
+    r.ray = Ray{Vec3(0.0f, 1.0f, 3.0f), Vec3(0.0f, 0.0f, -1.0f)};
+    r.label = hostile;
+    r.student = grader::CaseAnswer::closest(0xfffffffeu, std::numeric_limits<float>::quiet_NaN());
+    r.expected = grader::CaseAnswer::closest(4, 2.5f);
+    TraversalTrace trace;
+    trace.add(TraceOp{TraceOpKind::PrimitiveTest, 1, 0, 1u << 30, std::numeric_limits<float>::infinity(), 0.0f});
+    r.studentTrace = trace;
+    grader::addFailedCase(t, std::move(failed));
+    writeReport(dir, report);
+}
+
+void writePassingReport(const fs::path& dir) {
+    grader::GradingReport report;
+    report.implementation = "solutions/";
+    grader::TestResult& t = report.tests.emplace_back();
+    t.assignment = "a1";
+    t.name = "a1/bvh/closest-hits";
+    t.status = grader::TestStatus::Passed;
+    t.fraction = 1.0;
+    writeReport(dir, report);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -101,6 +152,8 @@ int main(int argc, char** argv) {
         fs::create_directories(out);
         writeDda(out / "dda");
         writeHostile(out / "hostile", argv[2]);
+        writeHostileReport(out / "report", argv[2]);
+        writePassingReport(out / "passing");
     } catch (const std::exception& e) {
         std::fprintf(stderr, "viewer_test_cases: %s\n", e.what());
         return 1;

@@ -1,6 +1,6 @@
 // The frame of a uniform grid (framework/interface/a3_grid.h): its bounds, the resolution the
-// student's gridResolution chooses, and the cell widths every later step divides by; and the
-// box of a cell.
+// student's gridResolution chooses, and the cell widths every later step divides by. A cell's
+// box is in grid_cell_box.cpp.
 #include "framework/interface/a3_grid.h"
 
 namespace rtlab {
@@ -28,11 +28,6 @@ UniformGrid gridFrameOver(const Bounds3f& bounds, size_t primCount, const GridOp
         grid.inverseWidth[a] = extent[a] > 0.0f ? float(grid.resolution[a]) / extent[a] : 0.0f;
     }
     return grid;
-}
-
-Bounds3f gridCellBox(const UniformGrid& grid, const GridCell& cell) {
-    Vec3 lower = grid.bounds.lower + Vec3(float(cell[0]), float(cell[1]), float(cell[2])) * grid.cellWidth;
-    return Bounds3f(lower, lower + grid.cellWidth);
 }
 
 }  // namespace rtlab

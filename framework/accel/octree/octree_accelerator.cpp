@@ -28,28 +28,13 @@ bool OctreeAccelerator::occluded(const Ray& ray, TraversalStats& stats) const {
 StructureView OctreeAccelerator::structure() const { return octreeStructureView(octree_); }
 
 StructureView octreeStructureView(const Octree& octree) {
-    StructureView view;
-    view.primIndices = octree.primIndices;
-    view.nodes.resize(octree.nodes.size());
-    if (octree.nodes.empty()) return view;
-    view.nodes[0].bounds = octree.root;
     // Parents come before their children in the array, so one pass hands every box down.
-    for (uint32_t i = 0; i < octree.nodes.size(); ++i) {
-        const OctreeNode& node = octree.nodes[i];
-        StructureNode& out = view.nodes[i];
-        if (node.isLeaf()) {
-            out.firstPrim = node.primStart;
-            out.primCount = node.primCount;
-            continue;
-        }
-        out.firstChild = static_cast<uint32_t>(view.children.size());
-        out.childCount = kOctreeChildren;
-        for (int k = 0; k < kOctreeChildren; ++k) {
-            view.children.push_back(node.firstChild + k);
-            view.nodes[node.firstChild + k].bounds = childBox(out.bounds, k);
-        }
-    }
-    return view;
+    std::vector<Bounds3f> boxes(octree.nodes.size());
+    if (!boxes.empty()) boxes[0] = octree.root;
+    for (uint32_t i = 0; i < octree.nodes.size(); ++i)
+        if (!octree.nodes[i].isLeaf())
+            for (int k = 0; k < kOctreeChildren; ++k) boxes[octree.nodes[i].firstChild + k] = childBox(boxes[i], k);
+    return octreeStructureView(octree, boxes);
 }
 
 AcceleratorType octreeType() {
