@@ -5,6 +5,7 @@
 #include "framework/core/pcg32.h"
 #include "framework/interface/a6_radiometry.h"
 #include "grader/a6_radiometry/radiometry_cases.h"
+#include "grader/a6_radiometry/wire/estimator_call.h"
 #include "grader/kit/statistics.h"
 #include "framework/render/oracle_rays.h"
 
@@ -27,19 +28,6 @@ std::vector<EstimatorCase> everyCase(uint64_t seed) {
                                directionCases(Estimator::UniformHemisphere, seed), directionCases(Estimator::CosineHemisphere, seed)})
         all.insert(all.end(), family.begin(), family.end());
     return all;
-}
-
-Vec3 referenceSample(const worker::EstimatorCall& c, Vec2 u, const SceneRays& rays) {
-    switch (c.estimator) {
-        case Estimator::PointLight: return estimatePointLight(c.point, c.pointLight, rays);
-        case Estimator::TriangleByArea: return estimateTriangleLightByArea(c.point, c.triangle, u, rays);
-        case Estimator::TriangleBySolidAngle: return estimateTriangleLightBySolidAngle(c.point, c.triangle, u, rays);
-        case Estimator::SphereByArea: return estimateSphereLightByArea(c.point, c.sphere, u, rays);
-        case Estimator::SphereBySolidAngle: return estimateSphereLightBySolidAngle(c.point, c.sphere, u, rays);
-        case Estimator::UniformHemisphere: return estimateByUniformHemisphere(c.point, u, rays);
-        case Estimator::CosineHemisphere: return estimateByCosineHemisphere(c.point, u, rays);
-    }
-    return Vec3(0.0f);
 }
 
 }  // namespace
@@ -74,7 +62,7 @@ TEST_CASE("a6 cases: the closed forms and spreads are those of the reference est
             std::array<MeanEstimate, 3> m;
             uint32_t count = c.call.estimator == Estimator::PointLight ? 1 : samples;
             for (uint32_t i = 0; i < count; ++i) {
-                Vec3 x = referenceSample(c.call, worker::uniformPair(rng), rays);
+                Vec3 x = worker::estimateSample(c.call, worker::uniformPair(rng), rays);
                 for (int ch = 0; ch < 3; ++ch) m[ch].add(x[ch]);
             }
             for (int ch = 0; ch < 3; ++ch) {

@@ -5,6 +5,7 @@
 // any other assignment's code.
 #include "framework/core/pcg32.h"
 #include "framework/interface/a6_radiometry.h"
+#include "grader/a6_radiometry/wire/estimator_call.h"
 #include "grader/a6_radiometry/wire/radiometry_inputs.h"
 #include "framework/render/oracle_rays.h"
 #include "grader/wire/scene_codec.h"
@@ -71,19 +72,6 @@ SampleResult sample(const SamplerCall& c, Vec2 u) {
     throw WireError("an unknown sampler");
 }
 
-Vec3 estimate(const EstimatorCall& c, Vec2 u, const SceneRays& rays) {
-    switch (c.estimator) {
-        case Estimator::PointLight: return estimatePointLight(c.point, c.pointLight, rays);
-        case Estimator::TriangleByArea: return estimateTriangleLightByArea(c.point, c.triangle, u, rays);
-        case Estimator::TriangleBySolidAngle: return estimateTriangleLightBySolidAngle(c.point, c.triangle, u, rays);
-        case Estimator::SphereByArea: return estimateSphereLightByArea(c.point, c.sphere, u, rays);
-        case Estimator::SphereBySolidAngle: return estimateSphereLightBySolidAngle(c.point, c.sphere, u, rays);
-        case Estimator::UniformHemisphere: return estimateByUniformHemisphere(c.point, u, rays);
-        case Estimator::CosineHemisphere: return estimateByCosineHemisphere(c.point, u, rays);
-    }
-    throw WireError("an unknown estimator");
-}
-
 void runUnits(ByteReader& input, ByteWriter& output, WorkerState&) {
     for (const UnitCall& call : input.getVector<UnitCall>(kMaxCalls)) output.put<double>(callUnit(call));
 }
@@ -131,7 +119,7 @@ void runEstimates(ByteReader& input, ByteWriter& output, WorkerState& state) {
         OracleRays rays(state.scene, oracle, call.point.position);
         Pcg32 rng(call.seed, k);
         output.put<uint64_t>(call.count);
-        for (uint32_t i = 0; i < call.count; ++i) output.put(estimate(call, uniformPair(rng), rays));
+        for (uint32_t i = 0; i < call.count; ++i) output.put(estimateSample(call, uniformPair(rng), rays));
     }
 }
 
