@@ -6,6 +6,7 @@
 #include "grader/kit/hit_judge.h"
 #include "grader/kit/stress_cases.h"
 #include "grader/kit/test_scenes.h"
+#include "grader/kit/truth_table.h"
 #include "grader/a0_intersect/wire/intersection_inputs.h"
 
 #include <cmath>
@@ -28,7 +29,7 @@ std::string formatFloat(double v) {
     return buffer;
 }
 
-std::string describeBox(const Bounds3f& box) {
+std::string boxShape(const Bounds3f& box) {
     char buffer[200];
     std::snprintf(buffer, sizeof buffer, "box (%.9g, %.9g, %.9g)-(%.9g, %.9g, %.9g)", box.lower.x, box.lower.y, box.lower.z,
                   box.upper.x, box.upper.y, box.upper.z);
@@ -55,8 +56,8 @@ bool closeTo(double value, double expected, double relative) {
 // One ray case of a truth table: the detail line names the shape too (what --verbose and the
 // HTML report show, so a failing case can be reproduced from the line alone); the reason keeps
 // the shorter id, ray and problem.
-void recordRayCase(CaseTally& tally, const std::string& id, const std::string& shape, const Ray& ray, const std::string& problem) {
-    tally.record(problem.empty(), id + " " + shape + ", ray " + describeRay(ray) + ": " + problem, id + " " + describeRay(ray) + ": " + problem);
+CaseLine rayCaseLine(const std::string& id, const std::string& shape, const Ray& ray, const std::string& problem) {
+    return {problem.empty(), id + " " + shape + ", ray " + describeRay(ray) + ": " + problem, id + " " + describeRay(ray) + ": " + problem};
 }
 
 // --- Truth tables ---------------------------------------------------------------------------
@@ -70,24 +71,18 @@ ChildPhase queriesPhase(const std::string& stub, const char* task, const std::ve
 }
 
 ChildPhase boxTablePhase(std::shared_ptr<const std::vector<BoxCase>> cases) {
-    std::vector<worker::BoxQuery> queries;
-    for (const BoxCase& c : *cases) queries.push_back({c.box, c.ray});
-    return queriesPhase(kStubBox, worker::kTaskBox, queries);
+    return tablePhase(kStubBox, worker::kTaskBox, *cases, [](const BoxCase& c) { return worker::BoxQuery{c.box, c.ray}; });
 }
 
 void scoreBoxTable(const std::vector<BoxCase>& cases, const PhaseOutcome& outcome, TestResult& result) {
-    if (failedPhaseResult(outcome, result)) return;
-    ByteReader in(outcome.data);
-    CaseTally tally(result);
-    for (const BoxCase& c : cases) {
+    scoreTable(outcome, cases, result, [](const BoxCase& c, ByteReader& in) {
         bool hit = in.get<uint8_t>() != 0;
         float enter = in.get<float>();
         std::string problem;
         if (hit != c.hit) problem = std::string("expected ") + (c.hit ? "hit" : "miss") + ", got " + (hit ? "hit" : "miss");
         else if (hit && !closeTo(enter, c.enter, 1e-5)) problem = "expected tEnter " + formatFloat(c.enter) + ", got " + formatFloat(enter);
-        recordRayCase(tally, c.id, describeBox(c.box), c.ray, problem);
-    }
-    tally.finish();
+        return rayCaseLine(c.id, boxShape(c.box), c.ray, problem);
+    });
 }
 
 ChildPhase trianglePhase(const std::vector<worker::TriangleQuery>& queries) {
@@ -103,10 +98,7 @@ ChildPhase triangleTablePhase(std::shared_ptr<const std::vector<TriangleCase>> c
 }
 
 void scoreTriangleTable(const std::vector<TriangleCase>& cases, const PhaseOutcome& outcome, TestResult& result) {
-    if (failedPhaseResult(outcome, result)) return;
-    ByteReader in(outcome.data);
-    CaseTally tally(result);
-    for (const TriangleCase& c : cases) {
+    scoreTable(outcome, cases, result, [](const TriangleCase& c, ByteReader& in) {
         bool anyHit = false;
         std::string problem;
         for (size_t k = 0; k < c.triangles.size(); ++k) {
@@ -122,30 +114,23 @@ void scoreTriangleTable(const std::vector<TriangleCase>& cases, const PhaseOutco
         std::string shapes;
         for (size_t k = 0; k < c.triangles.size(); ++k)
             shapes += (k ? "; " : "") + std::string("triangle ") + std::to_string(k) + " " + describeTriangle(c.triangles[k]);
-        recordRayCase(tally, c.id, shapes, c.ray, problem);
-    }
-    tally.finish();
+        return rayCaseLine(c.id, shapes, c.ray, problem);
+    });
 }
 
 ChildPhase sphereTablePhase(std::shared_ptr<const std::vector<SphereCase>> cases) {
-    std::vector<worker::SphereQuery> queries;
-    for (const SphereCase& c : *cases) queries.push_back({c.ray, c.centre, c.radius});
-    return queriesPhase(kStubSphere, worker::kTaskSphere, queries);
+    return tablePhase(kStubSphere, worker::kTaskSphere, *cases, [](const SphereCase& c) { return worker::SphereQuery{c.ray, c.centre, c.radius}; });
 }
 
 void scoreSphereTable(const std::vector<SphereCase>& cases, const PhaseOutcome& outcome, TestResult& result) {
-    if (failedPhaseResult(outcome, result)) return;
-    ByteReader in(outcome.data);
-    CaseTally tally(result);
-    for (const SphereCase& c : cases) {
+    scoreTable(outcome, cases, result, [](const SphereCase& c, ByteReader& in) {
         bool hit = in.get<uint8_t>() != 0;
         float t = in.get<float>();
         std::string problem;
         if (hit != c.hit) problem = std::string("expected ") + (c.hit ? "a hit at t=" + formatFloat(c.t) : "a miss") + ", got " + (hit ? "a hit at t=" + formatFloat(t) : "a miss");
         else if (hit && !closeTo(t, c.t, c.tolerance)) problem = "expected t=" + formatFloat(c.t) + ", got t=" + formatFloat(t);
-        recordRayCase(tally, c.id, describeSphere(c.centre, c.radius), c.ray, problem);
-    }
-    tally.finish();
+        return rayCaseLine(c.id, describeSphere(c.centre, c.radius), c.ray, problem);
+    });
 }
 
 template <typename Case>
@@ -240,7 +225,7 @@ TestGroup slabGroup(uint64_t seed) {
                     in.get<float>();
                     ++tally.total;
                     if (!hit && exactSlab(box, ray))
-                        tally.fail("BOX-05 " + describeBox(box) + ", ray " + describeRay(ray) +
+                        tally.fail("BOX-05 " + boxShape(box) + ", ray " + describeRay(ray) +
                                    ": expected a hit (the ray touches the flat box at z = 5), got a miss");
                 }
             tally.into(d, "box tests lost a box the ray touches");

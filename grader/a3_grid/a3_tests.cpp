@@ -76,26 +76,11 @@ std::vector<ResolutionCase> resolutionCases() {
 }
 
 TestGroup resolutionGroup() {
-    auto cases = std::make_shared<std::vector<ResolutionCase>>(resolutionCases());
-    std::vector<worker::ResolutionCall> calls;
-    for (const ResolutionCase& c : *cases) calls.push_back(c.call);
-    ByteWriter input;
-    input.putVector(calls);
-    TestGroup group{kA3, "a3 resolution rule", {makePhase(kStubResolution, worker::kTaskGridResolution, std::move(input))}, {}};
-    group.score = [cases](const SandboxRun& run, std::vector<TestResult>& results) {
-        TestResult result = makeResult(kA3, "a3/cells/resolution");
-        if (!failedPhaseResult(run.phases[0], result)) {
-            ByteReader in(run.phases[0].data);
-            CaseTally tally(result);
-            for (const ResolutionCase& c : *cases) {
-                GridCell got = readCell(in);
-                tally.record(c.id, got == c.expected ? "" : "expected " + describeCell(c.expected) + ", got " + describeCell(got));
-            }
-            tally.finish();
-        }
-        results.push_back(std::move(result));
-    };
-    return group;
+    return tableGroup(kA3, "a3 resolution rule", "a3/cells/resolution", kStubResolution, worker::kTaskGridResolution, resolutionCases(),
+                      [](const ResolutionCase& c, ByteReader& in) {
+                          GridCell got = readCell(in);
+                          return got == c.expected ? std::string() : expectedGot(describeCell(c.expected), describeCell(got));
+                      });
 }
 
 // --- Cell of a point, cell range of a box ------------------------------------------------------
@@ -146,47 +131,30 @@ TestGroup cellGroup() {
         {"flat grid: a point above its plane", {1.5f, 0.5f, 7}, {1, 0, 0}},
         {"flat grid: a point below its plane", {0.5f, 1.5f, -3}, {0, 1, 0}}});
     auto pointPhase = [](const GridFrame& frame, const std::vector<PointCase>& cases) {
-        std::vector<Vec3> ps;
-        for (const PointCase& c : cases) ps.push_back(c.p);
-        ByteWriter input;
-        input.put(frame);
-        input.putVector(ps);
-        return makePhase(kStubCell, worker::kTaskGridCell, std::move(input));
+        ByteWriter shared;
+        shared.put(frame);
+        return tablePhase(kStubCell, worker::kTaskGridCell, cases, [](const PointCase& c) { return c.p; }, std::move(shared));
     };
-    std::vector<Bounds3f> boxes;
-    for (const RangeCase& c : *ranges) boxes.push_back(c.box);
-    ByteWriter rangeInput;
-    rangeInput.put(unitFrame());
-    rangeInput.putVector(boxes);
+    ByteWriter rangeFrame;
+    rangeFrame.put(unitFrame());
     TestGroup group{kA3, "a3 cells of points and boxes",
                     {pointPhase(unitFrame(), *points), pointPhase(*flat, *flatPoints),
-                     makePhase(kStubRange, worker::kTaskGridRange, std::move(rangeInput))},
+                     tablePhase(kStubRange, worker::kTaskGridRange, *ranges, [](const RangeCase& c) { return c.box; }, std::move(rangeFrame))},
                     {}};
     group.score = [points, flatPoints, ranges](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult cells = makeResult(kA3, "a3/cells/cell-of-point"), range = makeResult(kA3, "a3/cells/cell-range");
-        if (!failedPhaseResult(run.phases[0], cells) && !failedPhaseResult(run.phases[1], cells)) {
-            CaseTally tally(cells);
-            for (size_t k = 0; k < 2; ++k) {
-                ByteReader in(run.phases[k].data);
-                for (const PointCase& c : k == 0 ? *points : *flatPoints) {
-                    GridCell got = readCell(in);
-                    tally.record(std::string(c.id) + " p = " + describeVec(c.p),
-                                 got == c.expected ? "" : "expected " + describeCell(c.expected) + ", got " + describeCell(got));
-                }
-            }
-            tally.finish();
-        }
-        if (!failedPhaseResult(run.phases[2], range)) {
-            ByteReader in(run.phases[2].data);
-            CaseTally tally(range);
-            for (const RangeCase& c : *ranges) {
-                GridCell lower = readCell(in), upper = readCell(in);
-                bool right = lower == c.lower && upper == c.upper;
-                tally.record(c.id, right ? "" : "expected " + describeCell(c.lower) + " .. " + describeCell(c.upper) + ", got " +
-                                                    describeCell(lower) + " .. " + describeCell(upper));
-            }
-            tally.finish();
-        }
+        scoreTable({TablePart<PointCase>{run.phases[0], *points}, TablePart<PointCase>{run.phases[1], *flatPoints}}, cells,
+                   [](const PointCase& c, ByteReader& in) {
+                       GridCell got = readCell(in);
+                       return caseLine(std::string(c.id) + " p = " + describeVec(c.p),
+                                       got == c.expected ? "" : expectedGot(describeCell(c.expected), describeCell(got)));
+                   });
+        scoreTable(run.phases[2], *ranges, range, [](const RangeCase& c, ByteReader& in) {
+            GridCell lower = readCell(in), upper = readCell(in);
+            bool right = lower == c.lower && upper == c.upper;
+            return right ? std::string()
+                         : expectedGot(describeCell(c.lower) + " .. " + describeCell(c.upper), describeCell(lower) + " .. " + describeCell(upper));
+        });
         results.push_back(std::move(cells));
         results.push_back(std::move(range));
     };
@@ -279,38 +247,23 @@ std::vector<StepCase> stepCases() {
 TestGroup ddaGroup() {
     auto setups = std::make_shared<std::vector<SetupCase>>(setupCases());
     auto steps = std::make_shared<std::vector<StepCase>>(stepCases());
-    std::vector<worker::DdaSetupCall> setupCalls;
-    for (const SetupCase& c : *setups) setupCalls.push_back(c.call);
-    std::vector<worker::DdaStepCall> stepCalls;
-    for (const StepCase& c : *steps) stepCalls.push_back(c.call);
-    ByteWriter setupInput, stepInput;
-    setupInput.put(unitFrame());
-    setupInput.putVector(setupCalls);
-    stepInput.putVector(stepCalls);
+    ByteWriter setupFrame;
+    setupFrame.put(unitFrame());
     TestGroup group{kA3, "a3 DDA set-up and step",
-                    {makePhase(kStubSetup, worker::kTaskDdaSetup, std::move(setupInput)), makePhase(kStubStep, worker::kTaskDdaStep, std::move(stepInput))},
+                    {tablePhase(kStubSetup, worker::kTaskDdaSetup, *setups, std::move(setupFrame)), tablePhase(kStubStep, worker::kTaskDdaStep, *steps)},
                     {}};
     group.score = [setups, steps](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult setup = makeResult(kA3, "a3/dda/setup"), step = makeResult(kA3, "a3/dda/step");
-        if (!failedPhaseResult(run.phases[0], setup)) {
-            ByteReader in(run.phases[0].data);
-            CaseTally tally(setup);
-            for (const SetupCase& c : *setups)
-                tally.record(std::string(c.id) + " " + describeRay(c.call.ray) + " tEnter " + formatNumber(c.call.tEnter),
-                             stateProblem(c.expected, in.get<DdaState>()));
-            tally.finish();
-        }
-        if (!failedPhaseResult(run.phases[1], step)) {
-            ByteReader in(run.phases[1].data);
-            CaseTally tally(step);
-            for (const StepCase& c : *steps) {
-                bool inside = in.get<uint8_t>() != 0;
-                std::string problem = stateProblem(c.expected, in.get<DdaState>());
-                if (inside != c.inside) problem = std::string("returned ") + (inside ? "true" : "false") + (problem.empty() ? "" : "; " + problem);
-                tally.record(c.id, problem);
-            }
-            tally.finish();
-        }
+        scoreTable(run.phases[0], *setups, setup, [](const SetupCase& c, ByteReader& in) {
+            return caseLine(std::string(c.id) + " " + describeRay(c.call.ray) + " tEnter " + formatNumber(c.call.tEnter),
+                            stateProblem(c.expected, in.get<DdaState>()));
+        });
+        scoreTable(run.phases[1], *steps, step, [](const StepCase& c, ByteReader& in) {
+            bool inside = in.get<uint8_t>() != 0;
+            std::string problem = stateProblem(c.expected, in.get<DdaState>());
+            if (inside != c.inside) problem = std::string("returned ") + (inside ? "true" : "false") + (problem.empty() ? "" : "; " + problem);
+            return problem;
+        });
         results.push_back(std::move(setup));
         results.push_back(std::move(step));
     };

@@ -70,41 +70,13 @@ PhaseState phaseState(const PhaseOutcome& outcome, TestResult& result, std::stri
     return PhaseState::Failed;
 }
 
-std::string expectedGot(const std::string& expected, const std::string& got) { return "expected " + expected + ", got " + got; }
-
-// One case of a truth table: what it checks, the call the worker makes, the answer the rule gives.
-template <typename Call, typename Answer>
-struct TableCase {
-    std::string id;
-    Call call;
-    Answer expected;
-};
-
-// A truth-table group of one phase: every case's `call` on the wire (after `input`, what the
-// calls share), each answer read back and judged against the case's `expected`.
-template <typename Call, typename Answer, typename Read, typename Describe>
-TestGroup truthTable(const char* title, const char* test, const std::string& stub, const char* task, std::vector<TableCase<Call, Answer>> list,
-                     ByteWriter input, Read read, Describe describe) {
-    using Case = TableCase<Call, Answer>;
-    auto cases = std::make_shared<std::vector<Case>>(std::move(list));
-    std::vector<Call> calls;
-    for (const Case& c : *cases) calls.push_back(c.call);
-    input.putVector(calls);
-    TestGroup group{kA4, title, {makePhase(stub, task, std::move(input))}, {}};
-    group.score = [cases, test, read, describe](const SandboxRun& run, std::vector<TestResult>& results) {
-        TestResult result = makeResult(kA4, test);
-        if (!failedPhaseResult(run.phases[0], result)) {
-            ByteReader in(run.phases[0].data);
-            CaseTally tally(result);
-            for (const Case& c : *cases) {
-                Answer got = read(in);
-                tally.record(c.id, same(got, c.expected) ? "" : expectedGot(describe(c.expected), describe(got)));
-            }
-            tally.finish();
-        }
-        results.push_back(std::move(result));
+// Judges an answer read by `read` bit for bit against the case's (same), described by `describe`.
+template <typename Read, typename Describe>
+auto exactly(Read read, Describe describe) {
+    return [read, describe](const auto& c, ByteReader& in) {
+        auto got = read(in);
+        return same(got, c.expected) ? std::string() : expectedGot(describe(c.expected), describe(got));
     };
-    return group;
 }
 
 template <typename T>
@@ -172,12 +144,9 @@ std::vector<ChildIndexCase> childIndexCases() {
 }
 
 std::vector<TestGroup> boxGroups() {
-    return {truthTable("a4 root box", "a4/boxes/root-box", kStubRootBox, worker::kTaskOctreeRootBox, rootBoxCases(), ByteWriter(),
-                                 readPlain<Bounds3f>, describeBox),
-            truthTable("a4 child box", "a4/boxes/child-box", kStubChildBox, worker::kTaskOctreeChildBox, childBoxCases(), ByteWriter(),
-                                 readPlain<Bounds3f>, describeBox),
-            truthTable("a4 child index", "a4/boxes/child-index", kStubChildIndex, worker::kTaskOctreeChildIndex, childIndexCases(),
-                                ByteWriter(), readPlain<int32_t>, childText)};
+    return {tableGroup(kA4, "a4 root box", "a4/boxes/root-box", kStubRootBox, worker::kTaskOctreeRootBox, rootBoxCases(), exactly(readPlain<Bounds3f>, describeBox)),
+            tableGroup(kA4, "a4 child box", "a4/boxes/child-box", kStubChildBox, worker::kTaskOctreeChildBox, childBoxCases(), exactly(readPlain<Bounds3f>, describeBox)),
+            tableGroup(kA4, "a4 child index", "a4/boxes/child-index", kStubChildIndex, worker::kTaskOctreeChildIndex, childIndexCases(), exactly(readPlain<int32_t>, childText))};
 }
 
 // --- Triangle and box ---------------------------------------------------------------------------
@@ -248,26 +217,18 @@ std::vector<worker::TriangleBoxCall> overlapProperty(uint64_t seed, size_t count
 TestGroup overlapGroup(uint64_t seed) {
     auto cases = std::make_shared<std::vector<OverlapCase>>(overlapCases());
     auto property = std::make_shared<std::vector<worker::TriangleBoxCall>>(overlapProperty(seed, 20000));
-    std::vector<worker::TriangleBoxCall> calls;
-    for (const OverlapCase& c : *cases) calls.push_back(c.call);
-    ByteWriter caseInput, propertyInput;
-    caseInput.putVector(calls);
+    ByteWriter propertyInput;
     propertyInput.putVector(*property);
     TestGroup group{kA4, "a4 triangle and box",
-                    {makePhase(kStubOverlap, worker::kTaskTriangleBox, std::move(caseInput)),
+                    {tablePhase(kStubOverlap, worker::kTaskTriangleBox, *cases),
                      makePhase(kStubOverlap, worker::kTaskTriangleBox, std::move(propertyInput))},
                     {}};
     group.score = [cases, property](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult truth = makeResult(kA4, "a4/overlap/cases"), random = makeResult(kA4, "a4/overlap/property");
-        if (!failedPhaseResult(run.phases[0], truth)) {
-            ByteReader in(run.phases[0].data);
-            CaseTally tally(truth);
-            for (const OverlapCase& c : *cases) {
-                bool got = readOverlap(in);
-                tally.record(c.id, got == c.expected ? "" : expectedGot(overlapText(c.expected), overlapText(got)));
-            }
-            tally.finish();
-        }
+        scoreTable(run.phases[0], *cases, truth, [](const OverlapCase& c, ByteReader& in) {
+            bool got = readOverlap(in);
+            return got == c.expected ? std::string() : expectedGot(overlapText(c.expected), overlapText(got));
+        });
         if (!failedPhaseResult(run.phases[1], random)) {
             ByteReader in(run.phases[1].data);
             size_t graded = 0, wrong = 0;
@@ -400,16 +361,11 @@ ByteWriter rootFirst(const Bounds3f& root) {
 }
 
 std::vector<TestGroup> walkGroups() {
-    return {truthTable("a4 mirroring", "a4/walk/mirror", kStubMirror, worker::kTaskOctreeMirror, mirrorCases(),
-                                    rootFirst(kMirrorRoot), readPlain<MirroredRay>, mirrorText),
-            truthTable("a4 root span", "a4/walk/root-span", kStubRootSpan, worker::kTaskOctreeRootSpan, spanCases(),
-                                 rootFirst(Bounds3f(Vec3(0.0f), Vec3(1.0f))), readPlain<NodeSpan>, spanText),
-            truthTable("a4 mid-plane parameters", "a4/walk/mid-parameters", kStubMid, worker::kTaskOctreeMid, midCases(), ByteWriter(),
-                             readPlain<Vec3>, describeVec),
-            truthTable("a4 first node", "a4/walk/first-node", kStubFirst, worker::kTaskOctreeFirstNode, firstNodeCases(), ByteWriter(),
-                                readPlain<int32_t>, childText),
-            truthTable("a4 next node", "a4/walk/next-node", kStubNext, worker::kTaskOctreeNextNode, nextNodeCases(), ByteWriter(),
-                                readPlain<int32_t>, childText)};
+    return {tableGroup(kA4, "a4 mirroring", "a4/walk/mirror", kStubMirror, worker::kTaskOctreeMirror, mirrorCases(), exactly(readPlain<MirroredRay>, mirrorText), rootFirst(kMirrorRoot)),
+            tableGroup(kA4, "a4 root span", "a4/walk/root-span", kStubRootSpan, worker::kTaskOctreeRootSpan, spanCases(), exactly(readPlain<NodeSpan>, spanText), rootFirst(Bounds3f(Vec3(0.0f), Vec3(1.0f)))),
+            tableGroup(kA4, "a4 mid-plane parameters", "a4/walk/mid-parameters", kStubMid, worker::kTaskOctreeMid, midCases(), exactly(readPlain<Vec3>, describeVec)),
+            tableGroup(kA4, "a4 first node", "a4/walk/first-node", kStubFirst, worker::kTaskOctreeFirstNode, firstNodeCases(), exactly(readPlain<int32_t>, childText)),
+            tableGroup(kA4, "a4 next node", "a4/walk/next-node", kStubNext, worker::kTaskOctreeNextNode, nextNodeCases(), exactly(readPlain<int32_t>, childText))};
 }
 
 // --- Whole octrees ------------------------------------------------------------------------------

@@ -62,37 +62,18 @@ std::string describeSplit(const KdSplit& s) {
            ", cost " + number(s.cost) + ", " + std::to_string(s.nBelow) + " below, " + std::to_string(s.nAbove) + " above";
 }
 
-// Results of phases that all answer the same kind of truth table: one test fed by several phases.
-template <typename Case, typename Judge>
-void scoreTable(const SandboxRun& run, size_t phase, const std::vector<Case>& cases, TestResult& result, Judge&& judge) {
-    if (failedPhaseResult(run.phases[phase], result)) return;
-    ByteReader in(run.phases[phase].data);
-    CaseTally tally(result);
-    for (const Case& c : cases) tally.record(c.id, judge(c, in));
-    tally.finish();
-}
-
-template <typename Call, typename Case, typename MakeCall>
-ChildPhase callsPhase(const std::string& stub, const char* task, const std::vector<Case>& cases, MakeCall&& makeCall) {
-    std::vector<Call> calls;
-    for (const Case& c : cases) calls.push_back(makeCall(c));
-    ByteWriter input;
-    input.putVector(calls);
-    return makePhase(stub, task, std::move(input));
-}
-
 // --- The cost of a plane, events ----------------------------------------------------------------
 
 TestGroup sahGroup() {
     auto cases = std::make_shared<std::vector<SahCostCase>>(sahCostCases());
     TestGroup group{kA5, "a5 plane cost",
-                    {callsPhase<worker::KdSahCall>(kStubSah, worker::kTaskKdSahCost, *cases, [](const SahCostCase& c) {
+                    {tablePhase(kStubSah, worker::kTaskKdSahCost, *cases, [](const SahCostCase& c) {
                         return worker::KdSahCall{c.node, c.axis, c.position, c.nBelow, c.nAbove, c.costs};
                     })},
                     {}};
     group.score = [cases](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult result = makeResult(kA5, "a5/sah/plane-cost");
-        scoreTable(run, 0, *cases, result, [](const SahCostCase& c, ByteReader& in) -> std::string {
+        scoreTable(run.phases[0], *cases, result, [](const SahCostCase& c, ByteReader& in) -> std::string {
             double got = in.get<double>();
             bool right = std::isinf(c.expected) ? got == c.expected : std::abs(got - c.expected) <= 1e-12 * std::abs(c.expected);
             return right ? "" : "expected " + number(c.expected) + ", got " + number(got);
@@ -113,18 +94,18 @@ TestGroup eventsGroup() {
         sortedInput.put<int32_t>(c.axis);
     }
     TestGroup group{kA5, "a5 events",
-                    {callsPhase<worker::KdEventPair>(kStubEventOrder, worker::kTaskKdEventOrder, *order,
+                    {tablePhase(kStubEventOrder, worker::kTaskKdEventOrder, *order,
                                                      [](const EventOrderCase& c) { return worker::KdEventPair{c.a, c.b}; }),
                      makePhase(kStubSortedEvents, worker::kTaskKdSortedEvents, std::move(sortedInput))},
                     {}};
     group.score = [order, sorted](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult before = makeResult(kA5, "a5/events/order"), list = makeResult(kA5, "a5/events/sorted");
-        scoreTable(run, 0, *order, before, [](const EventOrderCase& c, ByteReader& in) -> std::string {
+        scoreTable(run.phases[0], *order, before, [](const EventOrderCase& c, ByteReader& in) -> std::string {
             bool got = in.get<uint8_t>() != 0;
             return got == c.before ? ""
                                    : "kdEventBefore(" + describeEvent(c.a) + ", " + describeEvent(c.b) + ") returned " + (got ? "true" : "false");
         });
-        scoreTable(run, 1, *sorted, list, [](const SortedEventsCase& c, ByteReader& in) -> std::string {
+        scoreTable(run.phases[1], *sorted, list, [](const SortedEventsCase& c, ByteReader& in) -> std::string {
             auto got = in.getVector<KdEvent>(2 * c.prims.size() + 1);
             if (got == c.expected) return "";
             auto joined = [](const std::vector<KdEvent>& events) {
@@ -172,14 +153,14 @@ TestGroup splitGroup() {
     }
     TestGroup group{kA5, "a5 best plane and classification",
                     {makePhase(kStubBestSplit, worker::kTaskKdBestSplit, std::move(bestInput)),
-                     callsPhase<worker::KdClassifyCall>(kStubClassify, worker::kTaskKdClassify, *classify,
+                     tablePhase(kStubClassify, worker::kTaskKdClassify, *classify,
                                                         [](const ClassifyCase& c) {
                                                             return worker::KdClassifyCall{c.box, c.axis, c.position, c.planarSide};
                                                         })},
                     {}};
     group.score = [best, classify](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult plane = makeResult(kA5, "a5/split/best-plane"), side = makeResult(kA5, "a5/split/classify");
-        scoreTable(run, 0, *best, plane, [](const BestSplitCase& c, ByteReader& in) -> std::string {
+        scoreTable(run.phases[0], *best, plane, [](const BestSplitCase& c, ByteReader& in) -> std::string {
             auto got = in.get<KdSplit>();
             const KdSplit& e = c.expected;
             bool right = got.found() == e.found() &&
@@ -187,7 +168,7 @@ TestGroup splitGroup() {
                                          got.nBelow == e.nBelow && got.nAbove == e.nAbove && std::abs(got.cost - e.cost) <= 1e-12 * e.cost));
             return right ? "" : "expected " + describeSplit(e) + ", got " + describeSplit(got) + " (" + c.derivation + ")";
         });
-        scoreTable(run, 1, *classify, side, [](const ClassifyCase& c, ByteReader& in) -> std::string {
+        scoreTable(run.phases[1], *classify, side, [](const ClassifyCase& c, ByteReader& in) -> std::string {
             auto got = KdSide(in.get<uint8_t>());
             return got == c.expected ? "" : "expected " + sideName(c.expected) + ", got " + sideName(got);
         });
@@ -203,19 +184,19 @@ TestGroup leafGroup() {
     auto depths = std::make_shared<std::vector<MaxDepthCase>>(maxDepthCases());
     auto decisions = std::make_shared<std::vector<DecisionCase>>(decisionCases());
     TestGroup group{kA5, "a5 depth limit and leaf rule",
-                    {callsPhase<uint64_t>(kStubMaxDepth, worker::kTaskKdMaxDepth, *depths, [](const MaxDepthCase& c) { return c.primCount; }),
-                     callsPhase<worker::KdDecideCall>(kStubDecide, worker::kTaskKdDecide, *decisions,
+                    {tablePhase(kStubMaxDepth, worker::kTaskKdMaxDepth, *depths, [](const MaxDepthCase& c) { return c.primCount; }),
+                     tablePhase(kStubDecide, worker::kTaskKdDecide, *decisions,
                                                       [](const DecisionCase& c) {
                                                           return worker::KdDecideCall{c.primCount, c.depth, c.best, c.badRefines, c.options};
                                                       })},
                     {}};
     group.score = [depths, decisions](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult depth = makeResult(kA5, "a5/leaf/max-depth"), rule = makeResult(kA5, "a5/leaf/rule");
-        scoreTable(run, 0, *depths, depth, [](const MaxDepthCase& c, ByteReader& in) -> std::string {
+        scoreTable(run.phases[0], *depths, depth, [](const MaxDepthCase& c, ByteReader& in) -> std::string {
             auto got = in.get<int32_t>();
             return got == c.expected ? "" : "expected " + std::to_string(c.expected) + ", got " + std::to_string(got);
         });
-        scoreTable(run, 1, *decisions, rule, [](const DecisionCase& c, ByteReader& in) -> std::string {
+        scoreTable(run.phases[1], *decisions, rule, [](const DecisionCase& c, ByteReader& in) -> std::string {
             auto got = in.get<KdNodeDecision>();
             auto text = [](const KdNodeDecision& d) { return std::string(d.leaf ? "a leaf" : "a split") + " with " + std::to_string(d.badRefines) + " bad refines"; };
             return got.leaf == c.expected.leaf && got.badRefines == c.expected.badRefines ? "" : "expected " + text(c.expected) + ", got " + text(got);
@@ -231,14 +212,14 @@ TestGroup leafGroup() {
 TestGroup childOrderGroup() {
     auto cases = std::make_shared<std::vector<ChildOrderCase>>(childOrderCases());
     TestGroup group{kA5, "a5 child order",
-                    {callsPhase<worker::KdChildOrderCall>(kStubChildOrder, worker::kTaskKdChildOrder, *cases,
+                    {tablePhase(kStubChildOrder, worker::kTaskKdChildOrder, *cases,
                                                           [](const ChildOrderCase& c) {
                                                               return worker::KdChildOrderCall{c.axis, c.split, c.ray, c.tMin, c.tMax};
                                                           })},
                     {}};
     group.score = [cases](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult result = makeResult(kA5, "a5/traversal/child-order");
-        scoreTable(run, 0, *cases, result, [](const ChildOrderCase& c, ByteReader& in) -> std::string {
+        scoreTable(run.phases[0], *cases, result, [](const ChildOrderCase& c, ByteReader& in) -> std::string {
             auto got = in.get<KdChildOrder>();
             auto text = [](const KdChildOrder& o) {
                 std::string visits = o.visitFirst && o.visitSecond ? "both" : o.visitFirst ? "the first only" : o.visitSecond ? "the second only" : "neither";

@@ -12,6 +12,7 @@
 #include "framework/core/pcg32.h"
 #include "framework/oracle/closed_forms.h"
 #include "grader/a6_radiometry/a6_tests.h"
+#include "grader/kit/truth_table.h"
 #include "grader/a6_radiometry/radiometry_cases.h"
 #include "grader/a6_radiometry/sampler_histograms.h"
 #include "grader/a6_radiometry/sampler_mappings.h"
@@ -84,38 +85,21 @@ struct ValueCase {
 
 // One phase per table: the worker writes one f64 (or f32) per call, in order.
 template <typename Call, typename Value = double>
-TestGroup tableGroup(const char* title, const char* test, const std::string& stub, const char* task,
+TestGroup valueTable(const char* title, const char* test, const std::string& stub, const char* task,
                      std::vector<std::pair<Call, ValueCase>> table, double tolerance = kTableTolerance) {
-    std::vector<Call> calls;
-    auto cases = std::make_shared<std::vector<ValueCase>>();
-    for (auto& [call, c] : table) {
-        calls.push_back(call);
-        cases->push_back(c);
-    }
-    ByteWriter input;
-    input.putVector(calls);
-    TestGroup group{kA6, title, {makePhase(stub, task, std::move(input))}, {}};
-    group.score = [test = std::string(test), cases, tolerance](const SandboxRun& run, std::vector<TestResult>& results) {
-        TestResult result = makeResult(kA6, test);
-        if (!failedPhaseResult(run.phases[0], result)) scoreGuarded(result, [&] {
-            ByteReader in(run.phases[0].data);
-            CaseTally tally(result);
-            for (const ValueCase& c : *cases) {
-                double got = in.get<Value>();
-                tally.record(c.id, close(got, c.expected, tolerance) ? ""
-                                                                     : "expected " + formatNumber(c.expected) + ", got " + formatNumber(got));
-            }
-            tally.finish();
-        });
-        results.push_back(std::move(result));
-    };
-    return group;
+    using Case = TableCase<Call, double>;
+    std::vector<Case> cases;
+    for (auto& [call, c] : table) cases.push_back({c.id, call, c.expected});
+    return tableGroup(kA6, title, test, stub, task, std::move(cases), [tolerance](const Case& c, ByteReader& in) {
+        double got = in.get<Value>();
+        return close(got, c.expected, tolerance) ? std::string() : expectedGot(formatNumber(c.expected), formatNumber(got));
+    });
 }
 
 TestGroup unitsGroup() {
     using F = worker::UnitFunction;
     using C = worker::UnitCall;
-    return tableGroup<C>("a6 units", "a6/units/conversions", kStubUnits, worker::kTaskUnits,
+    return valueTable<C>("a6 units", "a6/units/conversions", kStubUnits, worker::kTaskUnits,
                          {
                              {C{F::EnergyFromPower, 60, 3600, 0}, {"a 60 W lamp for an hour: Q = 60 W * 3600 s", 216000.0}},
                              {C{F::PowerFromEnergy, 1000, 8, 0}, {"1000 J in 8 s: Phi = Q / t", 125.0}},
@@ -197,16 +181,16 @@ std::vector<TestGroup> solidAngleGroups() {
         {G{I::OnePlusCosPhi, 10, 1}, {"f = 1 + cos phi on one phi cell: its centre is phi = pi, so 0", 0.0}},
         {G{I::OnePlusCosPhi, 10, 4}, {"f = 1 + cos phi on 4 phi cells: the cosines cancel, as f = 1", one(10)}},
     };
-    return {tableGroup<C>("a6 solid angles of cones and spheres", "a6/solid-angle/cone-and-sphere", kStubSolidAngles, worker::kTaskSolidAngles, cones),
-            tableGroup<C>("a6 solid angles of triangles", "a6/solid-angle/triangle", kStubSolidAngles, worker::kTaskSolidAngles, triangles),
-            tableGroup<C>("a6 solid angles of rectangles", "a6/solid-angle/rectangle", kStubSolidAngles, worker::kTaskSolidAngles, rectangles),
-            tableGroup<G>("a6 the integral of dOmega", "a6/solid-angle/sphere-integral", kStubSolidAngles, worker::kTaskSphereIntegrals, integrals)};
+    return {valueTable<C>("a6 solid angles of cones and spheres", "a6/solid-angle/cone-and-sphere", kStubSolidAngles, worker::kTaskSolidAngles, cones),
+            valueTable<C>("a6 solid angles of triangles", "a6/solid-angle/triangle", kStubSolidAngles, worker::kTaskSolidAngles, triangles),
+            valueTable<C>("a6 solid angles of rectangles", "a6/solid-angle/rectangle", kStubSolidAngles, worker::kTaskSolidAngles, rectangles),
+            valueTable<G>("a6 the integral of dOmega", "a6/solid-angle/sphere-integral", kStubSolidAngles, worker::kTaskSphereIntegrals, integrals)};
 }
 
 TestGroup pdfConversionGroup() {
     using C = worker::PdfCall;
     const double inf = std::numeric_limits<double>::infinity();
-    return tableGroup<C, float>("a6 area to solid-angle pdf", "a6/samplers/area-to-solid-angle", kStubSamplers, worker::kTaskPdfConversions,
+    return valueTable<C, float>("a6 area to solid-angle pdf", "a6/samplers/area-to-solid-angle", kStubSamplers, worker::kTaskPdfConversions,
                                 {
                                     {C{0.5f, 4.0f, 0.5f}, {"pdfArea 0.5, d^2 = 4, cos 0.5: 0.5 * 4 / 0.5", 4.0}},
                                     {C{0.25f, 9.0f, -0.75f}, {"cos -0.75 (the light's back): |cos|, 0.25 * 9 / 0.75", 3.0}},

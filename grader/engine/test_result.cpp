@@ -21,6 +21,19 @@ void addFailedCase(TestResult& result, FailedCase failed) {
     result.failedCases.push_back(std::move(failed));
 }
 
+void markPassed(TestResult& result, const std::string& detail) {
+    result.status = TestStatus::Passed;
+    result.fraction = 1.0;
+    result.reason.clear();
+    if (!detail.empty()) result.details.push_back(detail);
+}
+
+void markFailed(TestResult& result, const std::string& reason) {
+    result.status = TestStatus::Failed;
+    result.fraction = 0.0;
+    result.reason = reason;
+}
+
 void CaseTally::record(bool passed, const std::string& detail, const std::string& reason) {
     ++total_;
     if (passed) {

@@ -53,13 +53,30 @@ void setFromCounts(TestResult& result, size_t passed, size_t total, const std::s
 // The verdicts of a truth table, case by case: counts the passes, keeps one detail line per
 // failing case ("id: problem"), and finish() sets the result from the counts, the first failure
 // as its reason.
+// Set a result's verdict: passed with one detail line (none when empty), or failed with a reason.
+void markPassed(TestResult& result, const std::string& detail);
+void markFailed(TestResult& result, const std::string& reason);
+
+// One case's verdict as the tally records it: the detail line (--verbose, the HTML report) may
+// say more than the reason line, which names the first failing case.
+struct CaseLine {
+    bool passed;
+    std::string detail, reason;
+};
+
+// The line of a case named `name` (its id, or its id with its input spelled out): "<name>: <problem>".
+inline CaseLine caseLine(const std::string& name, const std::string& problem) {
+    return {problem.empty(), name + ": " + problem, name + ": " + problem};
+}
+
 class CaseTally {
 public:
     explicit CaseTally(TestResult& result) : result_(result) {}
     // An empty problem means the case passed.
-    void record(const std::string& id, const std::string& problem) { record(problem.empty(), id + ": " + problem, id + ": " + problem); }
+    void record(const std::string& id, const std::string& problem) { record(caseLine(id, problem)); }
     // A case whose detail line says more than its reason (e.g. the shape it was tested on).
     void record(bool passed, const std::string& detail, const std::string& reason);
+    void record(const CaseLine& line) { record(line.passed, line.detail, line.reason); }
     void finish() { setFromCounts(result_, passed_, total_, first_); }
 
 private:

@@ -51,19 +51,6 @@ std::optional<std::vector<worker::RawQuery>> readQueries(const PhaseOutcome& out
     }
 }
 
-void markPassed(TestResult& result, const std::string& detail) {
-    result.status = TestStatus::Passed;
-    result.fraction = 1.0;
-    result.reason.clear();
-    if (!detail.empty()) result.details.push_back(detail);
-}
-
-void markFailed(TestResult& result, const std::string& reason) {
-    result.status = TestStatus::Failed;
-    result.fraction = 0.0;
-    result.reason = reason;
-}
-
 double meanWork(const std::vector<worker::RawQuery>& answers) {
     double sum = 0.0;
     for (const worker::RawQuery& a : answers) sum += double(a.nodeVisits) + a.primitiveTests;

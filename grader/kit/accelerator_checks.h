@@ -50,8 +50,6 @@ std::shared_ptr<PreparedScene> prepareScene(TestScene test, uint64_t seed);
 // structure; the largest carries the brute force's time per ray.
 const PreparedScenes& hitSetScenes(GradingContext& context);
 
-void markPassed(TestResult& result, const std::string& detail);
-void markFailed(TestResult& result, const std::string& reason);
 std::string formatNumber(double v);
 
 // The answers of a query phase, or nullopt with result failed (or not started) and why.

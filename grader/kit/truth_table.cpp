@@ -17,4 +17,6 @@ std::string describeBox(const Bounds3f& box) {
     return buffer;
 }
 
+std::string expectedGot(const std::string& expected, const std::string& got) { return "expected " + expected + ", got " + got; }
+
 }  // namespace rtlab::grader
