@@ -1,7 +1,7 @@
-// Running another program (a grading child of this executable) with a hard wall-clock cap:
-// it runs in a process group of its own, its output goes to a file (so nothing it prints can
-// block it or keep the wait alive), and on overrun its group and every process below it (a
-// compiler, a worker, in whatever group or session they put themselves) are killed.
+// A batch's grading child (this executable, grading one submission) under a hard wall-clock
+// cap, by framework/core/child_process.h: in a process group of its own, its output appended to
+// a log file, and on overrun its group and every process below it (a compiler, a worker, in
+// whatever group or session they put themselves) killed.
 #pragma once
 
 #include <string>

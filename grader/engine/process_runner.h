@@ -1,7 +1,7 @@
-// Runs another program for the grader with a hard wall-clock limit that nothing the program
-// does can extend, stdin closed, its output captured up to a cap, and resource limits; the
-// whole process group is killed on overrun. Used for the compiler (inside its sandbox) and for
-// git; the worker has its own, richer conversation (sandbox.h).
+// The grader's children that talk back only through their output: the compiler (inside its
+// sandbox) and git, run by framework/core/child_process.h in a process group of their own, with
+// the output captured up to a cap, resource limits and no core dumps; the worker has its own,
+// richer conversation (sandbox.h).
 #pragma once
 
 #include <string>
