@@ -13,10 +13,10 @@
 #include "framework/core/error.h"
 #include "framework/core/sha256.h"
 #include "framework/external/reference_manifest.h"
+#include "framework/external/reference_policy.h"
 #include "framework/external/temporary_directory.h"
 #include "framework/pov/pov_trace.h"
 #include "framework/verification/image_compare.h"
-#include "framework/render/image_io.h"
 #include "framework/scene/gltf_loader.h"
 
 #include <algorithm>
@@ -46,16 +46,14 @@ struct SceneJob {
 };
 
 // Where everything lives: DIR, DIR/refs, the manifest, and the root scene paths are relative to.
-struct RefsLayout {
+struct RefsLayout : ReferenceFolder {
     fs::path scenesDir;
-    fs::path refsDir;
-    fs::path manifestPath;
-    fs::path root;
 
-    RefsLayout(const std::string& dir, const std::string& manifestFile)
-        : scenesDir(dir), refsDir(scenesDir / "refs"), manifestPath(refsDir / manifestFile) {
+    RefsLayout(const std::string& dir, const std::string& manifestFile) : scenesDir(dir) {
         if (!fs::is_directory(scenesDir))
             throw Error(dir + ": no such scenes folder (run from the repository root or pass --scenes)");
+        refsDir = scenesDir / "refs";
+        manifestPath = refsDir / manifestFile;
         fs::path absolute = fs::absolute(scenesDir).lexically_normal();
         if (absolute.filename().empty()) absolute = absolute.parent_path();  // "scenes/"
         root = absolute.parent_path();
@@ -132,29 +130,13 @@ ReferenceEntry recipeFor(const SceneJob& job, const Scene& scene, const RefsLayo
     return entry;
 }
 
-std::string whyRender(const ReferenceEntry& wanted, const ReferenceManifest& manifest, const RefsLayout& layout,
-                      const ReferenceRenderer& renderer, bool force) {
-    if (force) return "forced";
-    auto found = manifest.entries.find(wanted.name);
-    if (found == manifest.entries.end()) return "new";
-    const ReferenceEntry& old = found->second;
-    if (old.inputs != wanted.inputs || old.scene != wanted.scene) return "scene changed";
-    if (old.exporter != wanted.exporter) return "exporter changed";
-    if (old.renderer != wanted.renderer) return renderer.name + " version changed";
-    if (!old.sameRecipe(wanted)) return "settings changed";
-    fs::path image = layout.refsDir / old.image;
-    if (!fs::exists(image)) return "image missing";
-    if (sha256OfFile(image.string()) != old.imageSha256) return "image modified";
-    return "";
-}
-
 void renderReferences(const RefsOptions& options, const RefsLayout& layout, ReferenceManifest& manifest,
                       const std::vector<SceneJob>& jobs, const ReferenceRenderer& renderer) {
     fs::create_directories(layout.refsDir);
     for (const SceneJob& job : jobs) {
         Scene scene = loadGltf(job.scene.string());
         ReferenceEntry wanted = recipeFor(job, scene, layout, renderer);
-        std::string reason = whyRender(wanted, manifest, layout, renderer, options.force);
+        std::string reason = whyRender(wanted, manifest, layout, renderer.name, options.force);
         if (reason.empty()) {
             refsLine(job.name) << "up to date\n";
             continue;
@@ -170,31 +152,8 @@ void renderReferences(const RefsOptions& options, const RefsLayout& layout, Refe
     }
 }
 
-// The manifest entry of a scene whose reference is current; otherwise prints why not and
-// returns nullptr.
-const ReferenceEntry* currentEntry(const SceneJob& job, const RefsLayout& layout, const ReferenceManifest& manifest,
-                                   const std::string& refsCommand) {
-    auto found = manifest.entries.find(job.name);
-    if (found == manifest.entries.end()) {
-        refsLine(job.name) << "FAIL: no reference in " << layout.manifestPath.string() << " (run " << refsCommand << ")\n";
-        return nullptr;
-    }
-    const ReferenceEntry& entry = found->second;
-    if (hashSceneInputs(job.scene, layout.root) != entry.inputs) {
-        refsLine(job.name) << "FAIL: " << entry.scene << " changed since its reference was rendered (run " << refsCommand
-                           << ")\n";
-        return nullptr;
-    }
-    if (!fs::exists(layout.refsDir / entry.image)) {
-        refsLine(job.name) << "FAIL: " << (layout.refsDir / entry.image).string() << " is missing (run " << refsCommand
-                           << ")\n";
-        return nullptr;
-    }
-    return &entry;
-}
-
 // Runs check(job, entry, scene) on every scene whose reference is current; check returns
-// whether the scene passed. A scene without a current reference fails (currentEntry says why).
+// whether the scene passed. A scene without a current reference fails (staleReference says why).
 // Returns the names of the scenes that failed.
 template <typename Check>
 std::vector<std::string> checkCurrentReferences(const RefsLayout& layout, const ReferenceManifest& manifest,
@@ -202,20 +161,11 @@ std::vector<std::string> checkCurrentReferences(const RefsLayout& layout, const 
                                                 Check check) {
     std::vector<std::string> failed;
     for (const SceneJob& job : jobs) {
-        const ReferenceEntry* entry = currentEntry(job, layout, manifest, refsCommand);
-        if (!entry || !check(job, *entry, loadGltf(job.scene.string()))) failed.push_back(job.name);
+        std::string stale = staleReference(job.name, job.scene, manifest, layout);
+        if (!stale.empty()) refsLine(job.name) << "FAIL: " << stale << " (run " << refsCommand << ")\n";
+        if (!stale.empty() || !check(job, manifest.entries.at(job.name), loadGltf(job.scene.string()))) failed.push_back(job.name);
     }
     return failed;
-}
-
-// The mean of an image's colour channels; its RMS differences are measured against it.
-double meanValue(const Image& image) {
-    int channels = std::min(image.channels, 3);
-    double sum = 0.0;
-    size_t count = 0;
-    for (size_t i = 0; i < image.pixels.size(); i += image.channels)
-        for (int c = 0; c < channels; ++c, ++count) sum += image.pixels[i + c];
-    return count > 0 ? sum / count : 0.0;
 }
 
 // Re-renders with the entry's own size: the references are compared pixel for pixel (a PNG's
@@ -236,22 +186,20 @@ std::vector<std::string> checkReferences(const RefsLayout& layout, const Referen
         }
         renderer.render(scene, scene.camera(entry.camera), fresh);
         ImageComparison c = compareImages(fresh.string(), committed.string(), 0.0);
-        bool identical = c.pixelsOverThreshold == 0;
-        double relativeRms = identical ? 0.0 : c.rmse / meanValue(readImage(committed.string()));
-        bool agrees = identical || relativeRms <= renderer.recheckTolerance;
-        refsLine(job.name) << (identical ? "identical" : agrees ? "agrees, not bit for bit" : "FAIL: differs") << " ("
+        ImageAgreement verdict = agreementWith(c, committed.string(), renderer.recheckTolerance);
+        refsLine(job.name) << (verdict.identical ? "identical" : verdict.agrees ? "agrees, not bit for bit" : "FAIL: differs") << " ("
                            << c.pixelCount << " pixels, " << c.pixelsOverThreshold << " differ, max ";
         if (c.wholeCodes)
             std::cout << c.maxCodes() << " codes";
         else
             std::cout << c.maxError;
-        if (!identical && renderer.recheckTolerance > 0.0)
-            std::cout << ", RMS " << std::setprecision(2) << relativeRms << " of the mean, allowed " << renderer.recheckTolerance
+        if (!verdict.identical && renderer.recheckTolerance > 0.0)
+            std::cout << ", RMS " << std::setprecision(2) << verdict.relativeRms << " of the mean, allowed " << renderer.recheckTolerance
                       << std::setprecision(6);
         std::cout << ")";
         if (entry.renderer != renderer.version) std::cout << " [reference made with " << entry.renderer << "]";
         std::cout << "\n";
-        return agrees;
+        return verdict.agrees;
     });
 }
 

@@ -185,6 +185,15 @@ void writeHeatMapOf(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b, const std:
     }
 }
 
+double meanValue(const Image& image) {
+    int channels = std::min(image.channels, 3);
+    double sum = 0.0;
+    size_t count = 0;
+    for (size_t i = 0; i < image.pixels.size(); i += image.channels)
+        for (int c = 0; c < channels; ++c, ++count) sum += image.pixels[i + c];
+    return count > 0 ? sum / count : 0.0;
+}
+
 }  // namespace
 
 ImageComparison compareImages(const std::string& pathA, const std::string& pathB, double thresholdCodes) {
@@ -223,6 +232,14 @@ std::string errorHeatMapLegend() {
     std::string legend = "grey = equal in 16-bit codes (image A, dimmed)";
     for (const HeatMapBand& band : errorHeatMapBands()) legend += ", " + band.colourName + " = " + band.meaning;
     return legend;
+}
+
+ImageAgreement agreementWith(const ImageComparison& comparison, const std::string& committedPath, double relativeRmsTolerance) {
+    ImageAgreement result;
+    result.identical = comparison.pixelsOverThreshold == 0;
+    result.relativeRms = result.identical ? 0.0 : comparison.rmse / meanValue(readImage(committedPath));
+    result.agrees = result.identical || result.relativeRms <= relativeRmsTolerance;
+    return result;
 }
 
 }  // namespace rtlab

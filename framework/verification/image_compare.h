@@ -57,6 +57,16 @@ ImageComparison compareImages(const std::string& pathA, const std::string& pathB
                               double thresholdCodes = 2.0);
 ImageComparison compareImages(const Image& a, const Image& b, double thresholdCodes = 2.0);
 
+// A re-rendered image against the committed one it should reproduce: identical pixels, or
+// the RMS of their difference over the committed image's mean (its channels' average) within
+// relativeRmsTolerance (0 demands identical pixels).
+struct ImageAgreement {
+    bool identical = false;
+    bool agrees = false;
+    double relativeRms = 0.0;  // 0 when identical
+};
+ImageAgreement agreementWith(const ImageComparison& comparison, const std::string& committedPath, double relativeRmsTolerance);
+
 // Writes an 8-bit PNG the size of the images. Both images are first quantised to 16-bit codes
 // (encodeLinear16, as our PNGs and POV-Ray's references are), so differences below a code that
 // round alike are equal: those pixels show image A as dim grey, the others are coloured by

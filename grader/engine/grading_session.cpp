@@ -166,6 +166,8 @@ GradingReport gradeWorker(const GradingOptions& options, std::vector<TestResult>
         if (report.studentOutput.size() < 4096) report.studentOutput += run.output.substr(0, 4096 - report.studentOutput.size());
     }
     if (terminal) std::cerr << "\r\033[K" << std::flush;
+    for (TestResult& test : report.tests)
+        if (test.needsFollowedStructure) requireFollowedStructure(context, test);
     if (!options.tests.empty())
         std::erase_if(report.tests, [&](const TestResult& r) { return !matchesAny(options.tests, r.name); });
     mergeSameNamed(report.tests);

@@ -30,6 +30,11 @@ struct TestResult {
     // The first few failing cases as data for the viewer (failed_case.h); empty when passed.
     std::vector<FailedCase> failedCases;
     double seconds = 0.0;
+    // Credited only when its assignment's traversal follows the structures it is given
+    // (GradingContext::unfollowedStructure): a test a private structure would pass. The session
+    // checks once every group has run, so a scene graded before the one that found it out is
+    // held to it too.
+    bool needsFollowedStructure = false;
 
     // From the rubric.
     double maxScore = 0.0;

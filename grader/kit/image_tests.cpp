@@ -48,7 +48,7 @@ uint32_t cameraIndex(const Scene& scene, const std::string& name) {
     return static_cast<uint32_t>(&camera - scene.cameras.data());
 }
 
-TestGroup renderGroup(const ImageConfig& config, std::shared_ptr<ImageJob> job, const std::string& workDir, GradingContext& context) {
+TestGroup renderGroup(const ImageConfig& config, std::shared_ptr<ImageJob> job, const std::string& workDir) {
     TestGroup group;
     group.assignment = config.assignment;
     group.title = "render " + job->name + " with " + config.accelerator;
@@ -59,7 +59,7 @@ TestGroup renderGroup(const ImageConfig& config, std::shared_ptr<ImageJob> job, 
     writeScene(job->scene, input);
     input.put(request);
     group.phases = {noSetUp(), makePhase(config.stub, worker::kTaskRender, std::move(input))};
-    group.score = [config, job, workDir, &context](const SandboxRun& run, std::vector<TestResult>& results) {
+    group.score = [config, job, workDir](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult result = makeResult(config.assignment, config.assignment + "/images/" + job->name);
         if (!failedPhaseResult(run.phases[1], result)) {
             try {
@@ -102,7 +102,7 @@ TestGroup renderGroup(const ImageConfig& config, std::shared_ptr<ImageJob> job, 
                                              render.width, render.height, std::array<int, 2>{c.maxX, c.maxY}, summary};
                     addFailedCase(result, std::move(failed));
                 }
-                requireFollowedStructure(context, result);
+                result.needsFollowedStructure = true;
             } catch (const std::exception& e) {
                 result.status = TestStatus::Failed;
                 result.reason = e.what();
@@ -176,7 +176,7 @@ std::vector<TestGroup> imageGroups(GradingContext& context, const ImageConfig& c
             groups.push_back(unavailableGroup(config.assignment, name, e.what()));
             continue;
         }
-        groups.push_back(renderGroup(config, job, context.workDir + "/images/" + config.assignment, context));
+        groups.push_back(renderGroup(config, job, context.workDir + "/images/" + config.assignment));
     }
     return groups;
 }

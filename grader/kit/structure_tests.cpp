@@ -230,7 +230,7 @@ std::string stressProblem(const StressRay& r, const worker::RawQuery& a) {
     return describeRay(r.ray) + ": expected " + expected + ", got " + got;
 }
 
-TestGroup degenerateGroup(const StructurePlugin& plugin, std::shared_ptr<StressScene> stress, GradingContext& context) {
+TestGroup degenerateGroup(const StructurePlugin& plugin, std::shared_ptr<StressScene> stress) {
     auto closestRays = std::make_shared<std::vector<Ray>>(), occlusionRays = std::make_shared<std::vector<Ray>>();
     for (const StressRay& r : stress->rays) (r.occlusionQuery ? occlusionRays : closestRays)->push_back(r.ray);
     TestGroup group{plugin.assignment,
@@ -238,7 +238,7 @@ TestGroup degenerateGroup(const StructurePlugin& plugin, std::shared_ptr<StressS
                     {plugin.build(stress->scene), queryPhase(plugin, queryOfKind(plugin, worker::QueryKind::Closest), *closestRays),
                      queryPhase(plugin, queryOfKind(plugin, worker::QueryKind::Occluded), *occlusionRays)},
                     {}};
-    group.score = [plugin, stress, closestRays, occlusionRays, &context](const SandboxRun& run, std::vector<TestResult>& results) {
+    group.score = [plugin, stress, closestRays, occlusionRays](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult result = makeResult(plugin.assignment, plugin.assignment + "/" + plugin.label + "/degenerate-inputs");
         const std::string tag = "[" + stress->id + "] ";
         if (failedPhaseResult(run.phases[0], result)) {
@@ -264,7 +264,7 @@ TestGroup degenerateGroup(const StructurePlugin& plugin, std::shared_ptr<StressS
         for (const std::string& p : problems) result.details.push_back(tag + p);
         if (problems.empty()) markPassed(result, tag + "built and answered correctly");
         else markFailed(result, tag + problems.front());
-        requireFollowedStructure(context, result);
+        result.needsFollowedStructure = true;
         results.push_back(std::move(result));
     };
     return group;
@@ -416,6 +416,9 @@ TestGroup structureSceneGroup(const StructurePlugin& plugin, std::shared_ptr<Pre
             if (structure.status == TestStatus::NotStarted) failLike(visits, structure, structure.reason);
         }
 
+        // What a private structure could answer: the hits and their speed, on every scene.
+        for (TestResult& t : hitTests) t.needsFollowedStructure = true;
+        efficiency.needsFollowedStructure = true;
         results.push_back(std::move(structure));
         if (plugin.cost) results.push_back(std::move(cost));
         for (TestResult& t : hitTests) results.push_back(std::move(t));
@@ -430,7 +433,7 @@ std::vector<TestGroup> structureGroups(const StructurePlugin& plugin, GradingCon
     for (const auto& scene : hitSetScenes(context).list) groups.push_back(structureSceneGroup(plugin, scene, context));
     for (StressScene& stress : stressScenes())
         if (std::find(plugin.skipDegenerate.begin(), plugin.skipDegenerate.end(), stress.id) == plugin.skipDegenerate.end())
-            groups.push_back(degenerateGroup(plugin, std::make_shared<StressScene>(std::move(stress)), context));
+            groups.push_back(degenerateGroup(plugin, std::make_shared<StressScene>(std::move(stress))));
     return groups;
 }
 

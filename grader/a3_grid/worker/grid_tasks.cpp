@@ -5,7 +5,7 @@
 #include "framework/interface/a3_grid.h"
 #include "grader/wire/scene_codec.h"
 #include "grader/a3_grid/wire/grid_codec.h"
-#include "grader/worker/query_answers.h"
+#include "grader/worker/structure_queries.h"
 #include "grader/a3_grid/wire/grid_inputs.h"
 #include "grader/worker/worker_tasks.h"
 
@@ -90,28 +90,12 @@ void runGridBuild(ByteReader& input, ByteWriter& output, WorkerState& state) {
     writeGrid(output, grid);
 }
 
-void answerGridQueries(const UniformGrid& grid, const PrimitiveSet& primitives, ByteReader& input, ByteWriter& output) {
-    QueryRequest request = readQueryRequest(input);
-    output.putVector(answerRays(
-        primitives, request.rays, request.kind == QueryKind::Occluded, [&](Traversal& t) { return GridAdapter::occluded(grid, t); },
-        [&](Traversal& t, Hit& hit) { return GridAdapter::intersect(grid, t, hit); }));
-}
-
-void runGridQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
-    answerGridQueries(builtStructure<UniformGrid>(state), *state.primitives, input, output);
-}
-
-// The traversal on a grid the grader built (given_structure.h), not the one the build made.
-void runGridGivenQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
-    const PrimitiveSet& primitives = builtPrimitives(state);
-    answerGridQueries(readGrid(input, primitives.size()), primitives, input, output);
-}
-
 const TaskRegistration registration{{kTaskGridResolution, runGridResolution}, {kTaskGridCell, runGridCell},
                                     {kTaskGridRange, runGridRange},           {kTaskDdaSetup, runDdaSetup},
                                     {kTaskDdaStep, runDdaStep},               {kTaskDdaWalk, runDdaWalk},
-                                    {kTaskGridBuild, runGridBuild},           {kTaskGridQuery, runGridQuery},
-                                    {kTaskGridGivenQuery, runGridGivenQuery}};
+                                    {kTaskGridBuild, runGridBuild},
+                                    {kTaskGridQuery, runBuiltQuery<GridAdapter, UniformGrid>},
+                                    {kTaskGridGivenQuery, runGivenQuery<GridAdapter, readGrid>}};
 
 }  // namespace
 

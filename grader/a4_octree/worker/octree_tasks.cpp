@@ -6,7 +6,7 @@
 #include "grader/wire/scene_codec.h"
 #include "grader/a4_octree/wire/octree_codec.h"
 #include "grader/a4_octree/wire/octree_inputs.h"
-#include "grader/worker/query_answers.h"
+#include "grader/worker/structure_queries.h"
 #include "grader/worker/worker_tasks.h"
 
 namespace rtlab::grader::worker {
@@ -72,23 +72,6 @@ void runBuild(ByteReader& input, ByteWriter& output, WorkerState& state) {
     writeOctree(output, octree);
 }
 
-void answerOctreeQueries(const Octree& octree, const PrimitiveSet& primitives, ByteReader& input, ByteWriter& output) {
-    QueryRequest request = readQueryRequest(input);
-    output.putVector(answerRays(
-        primitives, request.rays, request.kind == QueryKind::Occluded, [&](Traversal& t) { return OctreeAdapter::occluded(octree, t); },
-        [&](Traversal& t, Hit& hit) { return OctreeAdapter::intersect(octree, t, hit); }));
-}
-
-void runQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
-    answerOctreeQueries(builtStructure<Octree>(state), *state.primitives, input, output);
-}
-
-// The traversal on an octree the grader built (given_structure.h), not the one the build made.
-void runGivenQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
-    const PrimitiveSet& primitives = builtPrimitives(state);
-    answerOctreeQueries(readOctree(input, primitives.size()), primitives, input, output);
-}
-
 // The visit-order test judges these lists: the leaves in the order the walk entered them.
 void runLeaves(ByteReader& input, ByteWriter& output, WorkerState& state) {
     const Octree& octree = builtStructure<Octree>(state);
@@ -102,8 +85,9 @@ const TaskRegistration registration{{kTaskOctreeRootBox, runRootBox},     {kTask
                                     {kTaskOctreeMirror, runMirror},         {kTaskOctreeRootSpan, runRootSpan},
                                     {kTaskOctreeMid, runMid},               {kTaskOctreeFirstNode, runFirstNode},
                                     {kTaskOctreeNextNode, runNextNode},     {kTaskOctreeBuild, runBuild},
-                                    {kTaskOctreeQuery, runQuery},           {kTaskOctreeLeaves, runLeaves},
-                                    {kTaskOctreeGivenQuery, runGivenQuery}};
+                                    {kTaskOctreeLeaves, runLeaves},
+                                    {kTaskOctreeQuery, runBuiltQuery<OctreeAdapter, Octree>},
+                                    {kTaskOctreeGivenQuery, runGivenQuery<OctreeAdapter, readOctree>}};
 
 }  // namespace
 

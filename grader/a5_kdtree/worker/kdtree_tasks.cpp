@@ -8,7 +8,7 @@
 #include "grader/wire/scene_codec.h"
 #include "grader/a5_kdtree/wire/kdtree_codec.h"
 #include "grader/a5_kdtree/wire/kdtree_inputs.h"
-#include "grader/worker/query_answers.h"
+#include "grader/worker/structure_queries.h"
 #include "grader/worker/worker_tasks.h"
 
 namespace rtlab::grader::worker {
@@ -120,23 +120,6 @@ void runKdBuild(ByteReader& input, ByteWriter& output, WorkerState& state) {
     writeKdTree(output, tree);
 }
 
-void answerKdQueries(const KdTree& tree, const PrimitiveSet& primitives, ByteReader& input, ByteWriter& output) {
-    QueryRequest request = readQueryRequest(input);
-    output.putVector(answerRays(
-        primitives, request.rays, request.kind == QueryKind::Occluded, [&](Traversal& t) { return KdTreeAdapter::occluded(tree, t); },
-        [&](Traversal& t, Hit& hit) { return KdTreeAdapter::intersect(tree, t, hit); }));
-}
-
-void runKdQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
-    answerKdQueries(builtStructure<KdTree>(state), *state.primitives, input, output);
-}
-
-// The traversal on a KD-tree the grader built (given_structure.h), not the one the build made.
-void runKdGivenQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
-    const PrimitiveSet& primitives = builtPrimitives(state);
-    answerKdQueries(readKdTree(input, primitives.size()), primitives, input, output);
-}
-
 void runBspBuild(ByteReader& input, ByteWriter& output, WorkerState& state) {
     state.scene = readScene(input);
     auto options = input.get<BspOptions>();
@@ -162,7 +145,8 @@ const TaskRegistration registration{{kTaskKdSahCost, runKdSahCost},     {kTaskKd
                                     {kTaskKdClassify, runKdClassify},   {kTaskKdMaxDepth, runKdMaxDepth},
                                     {kTaskKdDecide, runKdDecide},       {kTaskKdChildOrder, runKdChildOrder},
                                     {kTaskKdWalk, runKdWalk},           {kTaskKdBuild, runKdBuild},
-                                    {kTaskKdQuery, runKdQuery},         {kTaskKdGivenQuery, runKdGivenQuery},
+                                    {kTaskKdQuery, runBuiltQuery<KdTreeAdapter, KdTree>},
+                                    {kTaskKdGivenQuery, runGivenQuery<KdTreeAdapter, readKdTree>},
                                     {kTaskBspBuild, runBspBuild},       {kTaskBspQuery, runBspQuery}};
 
 }  // namespace
