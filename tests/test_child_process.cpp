@@ -105,7 +105,7 @@ TEST_CASE("child process: a program that cannot be run is not started, and says 
 TEST_CASE("child process: the time limit kills the child's whole group") {
     // The background sleep prints its pid and keeps the output open: the limit, not the output's
     // end, has to stop the wait.
-    ChildRun run = runChild(shell("sleep 30 & echo $!; wait", 0.5));
+    ChildRun run = runChild(shell("sleep 30 & echo $!; wait", 3.0));
     CHECK(run.timedOut);
     CHECK_FALSE(run.succeeded());
     CHECK(run.seconds < 10.0);
@@ -113,9 +113,16 @@ TEST_CASE("child process: the time limit kills the child's whole group") {
     CHECK(endsSoon(std::stoi(run.output)));
 }
 
+TEST_CASE("child process: a child that exits while what it started holds the output open is stopped at the limit") {
+    ChildRun run = runChild(shell("sleep 30 & exit 0", 1.0));
+    CHECK(run.timedOut);
+    CHECK_FALSE(run.succeeded());
+    CHECK(run.seconds < 10.0);
+}
+
 TEST_CASE("child process: with killDescendants, also what left the group") {
     TemporaryDirectory work("rtlab-test-child");
-    ChildOptions options = shell("setsid sleep 30 & echo $!; wait", 0.5);
+    ChildOptions options = shell("setsid sleep 30 & echo $!; wait", 3.0);
     options.logPath = work.path() / "log.txt";
     options.killDescendants = true;
     ChildRun run = runChild(options);
@@ -128,6 +135,7 @@ TEST_CASE("child process: with killDescendants, also what left the group") {
 TEST_CASE("child process: the CPU limit ends a busy loop") {
     ChildOptions options = shell("while :; do :; done", 20.0);
     options.cpuSeconds = 1;
+    options.noCoreDumps = true;
     ChildRun run = runChild(options);
     CHECK_FALSE(run.timedOut);
     CHECK((run.signal == SIGXCPU || run.signal == SIGKILL));

@@ -1,5 +1,6 @@
-// Running another program: the one way rtlab starts a child process that it waits for (an
-// external renderer, the compiler in its sandbox, git, a batch's grading children). The child's
+// Running another program and waiting for it: an external renderer, the compiler in its
+// sandbox, git, a batch's grading children. (The sandboxed worker, which holds a conversation
+// over pipes while it runs, has its own start: grader/engine/sandbox_start.h.) The child's
 // stdin is /dev/null; its output is captured up to a cap or written to a log file, so nothing it
 // prints can block it or keep the wait alive; a hard wall-clock limit, which nothing the child
 // does can extend, ends it. What differs between callers is an option.
@@ -31,8 +32,8 @@ struct ChildOptions {
     // In a process group of its own, killed as a whole when it ends or overruns. Without it the
     // child stays in ours, so Ctrl-C stops it with us.
     bool ownGroup = true;
-    // On overrun, also kill what it started outside its group (a sandbox's own session),
-    // found through /proc and stopped before it is killed so it cannot start more.
+    // With ownGroup, on overrun also kill what it started outside its group (a sandbox's own
+    // session), found through /proc and stopped before it is killed so it cannot start more.
     bool killDescendants = false;
 
     // Resource limits set in the child before it executes (0: not set), and the drop to the

@@ -430,7 +430,8 @@ TestGroup triangleGroup(uint64_t seed) {
             scoreTriangleTable(*big, run.phases[8], bigTable);
             if (bigTable.status != TestStatus::Passed) {
                 ++tally.total;
-                tally.fail(bigTable.details.front());
+                // A phase that did not complete, or sent a malformed record, leaves no detail line.
+                tally.fail(bigTable.details.empty() ? bigTable.reason : bigTable.details.front());
             } else {
                 ++tally.total;
             }

@@ -10,7 +10,7 @@
 namespace rtlab::grader {
 
 struct CappedRun {
-    bool started = false;    // false: fork or exec failed (exitCode 127)
+    bool started = false;    // false: it could not be executed
     bool timedOut = false;   // the cap fired; the group was killed
     int exitCode = -1;       // when it exited
     int signal = 0;          // when a signal ended it

@@ -55,9 +55,6 @@ void addFailedCase(TestResult& result, FailedCase failed);
 // Passed when every case passed; otherwise failed with partial credit passed/total.
 void setFromCounts(TestResult& result, size_t passed, size_t total, const std::string& firstFailure);
 
-// The verdicts of a truth table, case by case: counts the passes, keeps one detail line per
-// failing case ("id: problem"), and finish() sets the result from the counts, the first failure
-// as its reason.
 // Set a result's verdict: passed with one detail line (none when empty), or failed with a reason.
 void markPassed(TestResult& result, const std::string& detail);
 void markFailed(TestResult& result, const std::string& reason);
@@ -74,6 +71,9 @@ inline CaseLine caseLine(const std::string& name, const std::string& problem) {
     return {problem.empty(), name + ": " + problem, name + ": " + problem};
 }
 
+// The verdicts of a truth table, case by case: counts the passes, keeps one detail line per
+// failing case ("id: problem"), and finish() sets the result from the counts, the first failure
+// as its reason.
 class CaseTally {
 public:
     explicit CaseTally(TestResult& result) : result_(result) {}

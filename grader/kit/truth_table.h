@@ -1,4 +1,4 @@
-// The truth tables of a0-a6: a list of cases, each a call the worker makes on the student's
+// The truth tables of a0 and a3-a6: a list of cases, each a call the worker makes on the student's
 // function and what the pinned rule says it returns. One phase sends every case's call (after
 // what the calls share); the grader reads the answers back in the same order and judges each,
 // and CaseTally turns the verdicts into the test's fraction, reason and detail lines.
