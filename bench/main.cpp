@@ -8,11 +8,10 @@
 #include "bench/parameter_sweep.h"
 #include "bench/reference_check.h"
 #include "bench/grid_report.h"
-#include "bench/octree_report.h"
-#include "bench/kdtree_report.h"
 #include "bench/render_race.h"
 #include "bench/report.h"
 #include "bench/structures_report.h"
+#include "bench/target_tables.h"
 #include "bench/throughput.h"
 #include "framework/accel/accelerator_registry.h"
 #include "framework/core/error.h"
@@ -80,9 +79,7 @@ int runBench(const Options& options) {
         std::cout << "\n## Throughput" << (options.quick ? " (--quick: every 16th ray, one pass)" : "") << "\n";
         writeMarkdown(std::cout, records);
         writeTargets(std::cout, records);
-        writeGridTargets(std::cout, records);
-        writeOctreeTargets(std::cout, records);
-        writeKdTreeTargets(std::cout, records);
+        writeStructureTargets(std::cout, records);
         if (!options.outDir.empty()) {
             writeCsv(outPath("results.csv"), records);
             writeGridSweepSvg(outPath("grid-sweep.svg"), records);

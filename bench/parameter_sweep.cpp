@@ -60,19 +60,19 @@ std::vector<ParameterPoint> runParameterSweep(const ParameterSweepOptions& optio
         for (size_t i = 0; i < all.size(); i += options.rayStride)
             rays[static_cast<int>(kind)].push_back({all[i].origin, all[i].direction});
     }
-    std::vector<AcceleratorSpec> specs;
+    std::vector<std::pair<std::string, int>> rows;  // accelerator name, maxLeaf
     for (int leaf : options.maxLeaf) {
-        for (int b : options.buckets) specs.push_back({"bvh-buckets:" + std::to_string(b), leaf});
-        if (options.fullSweep) specs.push_back({"bvh-sah", leaf});
+        for (int b : options.buckets) rows.emplace_back("bvh-buckets:" + std::to_string(b), leaf);
+        if (options.fullSweep) rows.emplace_back("bvh-sah", leaf);
     }
     std::vector<ParameterPoint> points;
     std::cerr << "bench: parameter sweep on " << options.scene << ":";
-    for (const AcceleratorSpec& spec : specs) {
-        RtlabSystem system(primitives, spec);
+    for (const auto& [name, leaf] : rows) {
+        RtlabSystem system(primitives, withMaxLeaf(name, leaf));
         ParameterPoint p;
-        p.accelerator = spec.name;
-        p.buckets = spec.name.starts_with("bvh-buckets:") ? std::stoi(spec.name.substr(12)) : 0;
-        p.maxLeaf = spec.maxLeaf;
+        p.accelerator = name;
+        p.buckets = name.starts_with("bvh-buckets:") ? std::stoi(name.substr(12)) : 0;
+        p.maxLeaf = leaf;
         p.buildMs = medianBuildMs(system, 1, options.buildRepeats, /*pinToOneCpu=*/true);
         system.build(1);
         p.sahCost = system.sahCost().value_or(0.0);

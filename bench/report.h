@@ -23,7 +23,7 @@ void writeCsv(const std::string& path, const std::vector<ThroughputRecord>& reco
 // (<= 1.5).
 void writeTargets(std::ostream& out, const std::vector<ThroughputRecord>& records);
 
-// Helpers of the structures' target tables (grid_report.h, kdtree_report.h): a scene's measured
+// Helpers of the structures' target tables (target_tables.h: grid_report.cpp, kdtree_report.cpp): a scene's measured
 // single-thread primary-ray row of a system, a number to three significant digits, and "met" or
 // "**not met**".
 const ThroughputRecord* primaryRow(const std::vector<ThroughputRecord>& records, const std::string& scene, const std::string& system);

@@ -1,14 +1,22 @@
 #include "bench/rtlab_system.h"
 
 #include "framework/accel/accelerator_registry.h"
+#include "framework/interface/bvh.h"
 
 #include <chrono>
 
 namespace rtlab::bench {
 
+AcceleratorSpec withMaxLeaf(const std::string& name, int maxLeaf) {
+    AcceleratorSpec spec{name};
+    if (maxLeaf != BvhOptions().maxLeaf) spec.set("--max-leaf", "leaf", maxLeaf);
+    return spec;
+}
+
 std::string rtlabLabel(const AcceleratorSpec& spec) {
     std::string label = "rtlab:" + spec.name;
-    if (spec.maxLeaf != AcceleratorSpec{}.maxLeaf) label += ":L" + std::to_string(spec.maxLeaf);
+    if (const AcceleratorSpec::FlagSetting* leaf = spec.flagSetting("leaf"))
+        label += ":L" + std::to_string(static_cast<int>(std::get<double>(leaf->value)));
     return label;
 }
 

@@ -33,7 +33,11 @@ private:
     std::unique_ptr<Accelerator> accelerator_;
 };
 
-// "rtlab:" + the --accel name, with ":L<maxLeaf>" when maxLeaf is not the default 4.
+// The accelerator `name` with the bench's --max-leaf, which sets the BVH's leaf as render's flag
+// does: only away from its default 4.
+AcceleratorSpec withMaxLeaf(const std::string& name, int maxLeaf);
+
+// "rtlab:" + the --accel name, with ":L<maxLeaf>" when --max-leaf set the leaf.
 std::string rtlabLabel(const AcceleratorSpec& spec);
 
 }  // namespace rtlab::bench

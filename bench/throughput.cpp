@@ -37,10 +37,7 @@ std::unique_ptr<BenchSystem> makeSystem(const std::string& label, const Scene& s
                                         int maxLeaf) {
     if (label == "embree:medium") return std::make_unique<EmbreeSystem>(scene, EmbreeQuality::Medium);
     if (label == "embree:high") return std::make_unique<EmbreeSystem>(scene, EmbreeQuality::High);
-    AcceleratorSpec spec;
-    spec.name = label.substr(6);  // after "rtlab:"
-    spec.maxLeaf = maxLeaf;
-    return std::make_unique<RtlabSystem>(primitives, spec);
+    return std::make_unique<RtlabSystem>(primitives, withMaxLeaf(label.substr(6), maxLeaf));  // after "rtlab:"
 }
 
 bool selected(const ThroughputOptions& options, const std::string& label) {

@@ -91,7 +91,7 @@ void render(RenderOptions options) {
         checkImageOutput(aovPath(options, aov));
         refuseToOverwriteScene(aovPath(options, aov), options.scenePath);
     }
-    makeAccelerator(options.accelerator);  // an unknown --accel fails here, before the scene is loaded
+    chooseAccelerator(options.accelerator);  // an unknown --accel fails here, before the scene is loaded
 
     Scene scene = loadGltf(options.scenePath);
     const Camera& camera = scene.camera(options.cameraName);

@@ -152,10 +152,21 @@ TEST_CASE("accelerator names: options, defaults, ranges and the older spellings"
     for (const char* invalid : {"grid:C=0", "grid:C=1001", "grid:res=1.5", "grid:B=12", "grid:C", "bvh:split=magic",
                                 "bvh:B=1", "bvh:B=12,B=13", "bvh-median:12", "bvh-magic", "octopus", "brute:C=1"})
         CHECK_THROWS_AS(make(invalid), Error);
-    AcceleratorSpec flags;
-    flags.name = "grid";
-    flags.recursiveTraversal = true;
+    AcceleratorSpec flags{"grid"};
+    flags.set("--traversal recursive", "traversal", "recursive");
     CHECK_THROWS_AS(makeAccelerator(flags), Error);  // the grid has no traversal option
+    CHECK_THROWS_AS(chooseAccelerator(flags), Error);  // said without making one
+    // A flag is typed and checked against the structure's own range, and wins over the name.
+    AcceleratorSpec leaf{"bvh:leaf=2"};
+    leaf.set("--max-leaf", "leaf", 8);
+    CHECK(chooseAccelerator(leaf).parameters.integer("leaf") == 8);
+    leaf.set("--max-leaf", "leaf", 0);
+    try {
+        chooseAccelerator(leaf);
+        FAIL("--max-leaf 0 was taken");
+    } catch (const Error& e) {
+        CHECK(std::string(e.what()) == "--max-leaf 0 is out of range (1..65535)");
+    }
     // The help lists every structure with each option's default and range.
     std::string help = acceleratorNames();
     for (const AcceleratorType* type : acceleratorTypes()) {

@@ -277,52 +277,41 @@ void computeExpected(RaySet& set, const Scene& scene) {
     for (const Ray& ray : set.rays) set.expected.push_back(oracle.closestHit(OracleRay::from(ray)));
 }
 
+// A name with the options render's flags would set (--traversal recursive, --sah-axes all,
+// --max-leaf), each set only away from its default, as the flags do.
 struct AcceleratorCase {
     AcceleratorSpec spec;
+    bool recursive = false;
+    bool allAxes = false;
+    int maxLeaf = 4;
+
+    AcceleratorCase(const std::string& name, bool recursive = false, bool allAxes = false, int maxLeaf = 4)
+        : spec{name}, recursive(recursive), allAxes(allAxes), maxLeaf(maxLeaf) {
+        if (recursive) spec.set("--traversal recursive", "traversal", "recursive");
+        if (allAxes) spec.set("--sah-axes all", "axes", "all");
+        if (maxLeaf != 4) spec.set("--max-leaf", "leaf", maxLeaf);
+    }
     std::string label() const {
-        return spec.name + (spec.recursiveTraversal ? " recursive" : " ordered") + (spec.sahAllAxes ? " all-axes" : "") +
-               " maxLeaf " + std::to_string(spec.maxLeaf);
+        return spec.name + (recursive ? " recursive" : " ordered") + (allAxes ? " all-axes" : "") + " maxLeaf " +
+               std::to_string(maxLeaf);
     }
 };
 
 std::vector<AcceleratorCase> allAccelerators() {
     std::vector<AcceleratorCase> cases;
-    AcceleratorSpec brute;
-    brute.name = "brute";
-    cases.push_back({brute});
+    cases.emplace_back("brute");
     for (const char* name : {"bvh-median", "bvh-middle", "bvh-equal", "bvh-sah", "bvh-buckets:4", "bvh-buckets:12",
                              "bvh-buckets:32"})
         for (bool recursive : {false, true})
-            for (int maxLeaf : {1, 4, 8}) {
-                AcceleratorSpec spec;
-                spec.name = name;
-                spec.recursiveTraversal = recursive;
-                spec.maxLeaf = maxLeaf;
-                cases.push_back({spec});
-            }
-    for (const char* name : {"bvh-sah", "bvh-buckets:12"}) {
-        AcceleratorSpec spec;
-        spec.name = name;
-        spec.sahAllAxes = true;
-        cases.push_back({spec});
-    }
+            for (int maxLeaf : {1, 4, 8}) cases.emplace_back(name, recursive, false, maxLeaf);
+    for (const char* name : {"bvh-sah", "bvh-buckets:12"}) cases.emplace_back(name, false, true);
     // The wide traversals of the same trees (fast/).
     for (const char* name : {"bvh4-median", "bvh4-middle", "bvh4-equal", "bvh4-sah", "bvh4-buckets:12", "bvh8-sah",
                              "bvh8-buckets:12"})
-        for (int maxLeaf : {1, 4, 8}) {
-            AcceleratorSpec spec;
-            spec.name = name;
-            spec.maxLeaf = maxLeaf;
-            cases.push_back({spec});
-        }
-    // fast/'s own wide tree; its largest leaf is named, since its default is not the spec's.
+        for (int maxLeaf : {1, 4, 8}) cases.emplace_back(name, false, false, maxLeaf);
+    // fast/'s own wide tree; its largest leaf is named, since its default is not the BVHs'.
     for (const char* name : {"fastbvh:width=4", "fastbvh:width=8", "fastbvh:width=8,bins=2"})
-        for (int maxLeaf : {1, 4, 8}) {
-            AcceleratorSpec spec;
-            spec.name = std::string(name) + ",leaf=" + std::to_string(maxLeaf);
-            spec.maxLeaf = maxLeaf;
-            cases.push_back({spec});
-        }
+        for (int maxLeaf : {1, 4, 8}) cases.emplace_back(std::string(name) + ",leaf=" + std::to_string(maxLeaf), false, false, maxLeaf);
     return cases;
 }
 
@@ -393,9 +382,9 @@ void checkStructure(const StructureView& view, const PrimitiveSet& prims, const 
     CHECK(view.primIndices.size() == prims.size());
 }
 
-BvhOptions optionsOf(const AcceleratorSpec& spec) {
+BvhOptions optionsOf(const AcceleratorCase& c) {
     BvhOptions options;
-    options.maxLeaf = spec.maxLeaf;
+    options.maxLeaf = c.maxLeaf;
     return options;
 }
 
@@ -420,7 +409,7 @@ void checkAllAccelerators(const Scene& scene, RaySet& set,
         auto accel = makeAccelerator(c.spec);
         accel->build(prims);
         if (c.spec.name != "brute")
-            checkStructure(accel->structure(), prims, optionsOf(c.spec), !c.spec.name.starts_with("bvh-"));
+            checkStructure(accel->structure(), prims, optionsOf(c), !c.spec.name.starts_with("bvh-"));
         TraversalStats stats;
         int wrong = 0, leaks = 0, shadowMismatches = 0, anyHitDisagreements = 0;
         std::string firstProblem;
@@ -520,7 +509,7 @@ TEST_CASE("every accelerator matches the oracle on the bunny and the engine") {
     // scripts/fetch-models puts them into the build tree (`make test` does that first).
     std::vector<AcceleratorCase> accelerators;
     for (const AcceleratorCase& c : allAccelerators())
-        if (c.spec.maxLeaf == 4) accelerators.push_back(c);
+        if (c.maxLeaf == 4) accelerators.push_back(c);
     for (const char* file : {"bunny.gltf", "engine.glb"}) {
         CAPTURE(file);
         Scene scene = loadFetchedModel(file);
@@ -650,10 +639,7 @@ TEST_CASE("the ordered traversal does less work than the recursive one and than 
     RaySet set;
     addRandomRays(set, scene, 2000, 9);
     auto work = [&](const std::string& name, bool recursive) {
-        AcceleratorSpec spec;
-        spec.name = name;
-        spec.recursiveTraversal = recursive;
-        auto accel = makeAccelerator(spec);
+        auto accel = makeAccelerator(AcceleratorCase(name, recursive).spec);
         accel->build(prims);
         TraversalStats stats;
         for (const Ray& ray : set.rays) accel->intersect(ray, stats);

@@ -5,12 +5,14 @@
 // test_bvh.cpp, with every other accelerator's.
 #include "fast/wide_bvh_builder.h"
 #include "framework/accel/accelerator.h"
+#include "framework/accel/accelerator_registry.h"
 #include "framework/core/pcg32.h"
 #include "framework/scene/benchmark_rays.h"
 #include "tests/fetched_models.h"
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <string>
 
 using namespace rtlab;
@@ -125,4 +127,17 @@ TEST_CASE("the fast BVH's builder rejects options out of range") {
     options.bins = kMaxSahBins + 1;
     CHECK_THROWS(buildWideBvh<4>(boxes, options));
     CHECK(buildWideBvh<4>({}, WideBvhBuildOptions{}).nodes.empty());
+}
+
+TEST_CASE("every structure fast/ registers is named for the executables that leave fast/ out") {
+    // The framework's own structures (framework/accel/*); every other one came from fast/.
+    const std::vector<std::string> framework{"brute", "bvh", "grid", "grid2", "octree", "kdtree", "bsp"};
+    size_t fromFast = 0;
+    for (const AcceleratorType* type : acceleratorTypes()) {
+        if (std::find(framework.begin(), framework.end(), type->name) != framework.end()) continue;
+        ++fromFast;
+        CAPTURE(type->name);
+        CHECK(whereAcceleratorIs(type->name) != nullptr);
+    }
+    CHECK(fromFast >= 4);  // bvh4, bvh8, fastbvh, fastgrid
 }

@@ -20,9 +20,8 @@ using namespace rtlab;
 namespace {
 
 std::unique_ptr<Accelerator> built(const std::string& name, const PrimitiveSet& prims, int maxLeaf = 4) {
-    AcceleratorSpec spec;
-    spec.name = name;
-    spec.maxLeaf = maxLeaf;
+    AcceleratorSpec spec{name};
+    if (maxLeaf != 4) spec.set("--max-leaf", "leaf", maxLeaf);
     auto accel = makeAccelerator(spec);
     accel->build(prims);
     return accel;

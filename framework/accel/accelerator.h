@@ -11,6 +11,9 @@
 
 #include <memory>
 #include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
 
 namespace rtlab {
 
@@ -28,17 +31,36 @@ public:
     virtual size_t memoryBytes() const = 0;
 };
 
-// What --accel and its companion flags ask for. The name is parsed by the accelerator
-// registry (accelerator_registry.h); the flags override the BVH options of the same meaning
-// (leaf, traversal, axes) and are an error for a structure that has no such option.
+// One option's value: a number, or one of the words the option takes.
+using AcceleratorValue = std::variant<double, std::string>;
+
+// What --accel and its companion flags ask for: a structure's name with its options
+// ("grid:C=9", "bvh:split=sah,leaf=8" or an older spelling such as "bvh-sah"), which the
+// accelerator registry parses (accelerator_registry.h), and the options flags set on top of the
+// name's, typed as the flags read them. Which options a structure has is its own business: the
+// spec names none.
 struct AcceleratorSpec {
+    // An option a command-line flag set: `--max-leaf 8` sets leaf to 8. The flag, as written,
+    // names it in errors; one the structure does not have is an error.
+    struct FlagSetting {
+        std::string flag;
+        std::string key;
+        AcceleratorValue value;
+    };
+
     std::string name = "bvh-buckets";
-    int maxLeaf = 4;
-    bool recursiveTraversal = false;  // the lecture's recursive BVH traversal instead of ordered
-    bool sahAllAxes = false;          // bvh-sah, bvh-buckets: try x, y and z, not only the longest axis
+    std::vector<FlagSetting> flags;
+
+    // Sets key as flag does, over the name's value and any earlier flag's.
+    AcceleratorSpec& set(const std::string& flag, const std::string& key, double number);
+    AcceleratorSpec& set(const std::string& flag, const std::string& key, const std::string& word);
+    // The flag that set key, or nullptr.
+    const FlagSetting* flagSetting(std::string_view key) const;
 };
 
-// Throws rtlab::Error naming the problem and the valid names when spec cannot be built.
+// The accelerator spec asks for, not yet built over anything. Throws rtlab::Error naming the
+// problem (and the valid names) when spec names no accelerator; checkAccelerator
+// (accelerator_registry.h) says the same without making one.
 std::unique_ptr<Accelerator> makeAccelerator(const AcceleratorSpec& spec);
 
 // The structures and options this executable knows, one line each, for help texts.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -37,15 +38,21 @@ const std::vector<AcceleratorType>& framework() {
     return types;
 }
 
+// Names registered as linked elsewhere, with where (AcceleratorsElsewhere).
+std::map<std::string, std::string, std::less<>>& elsewhere() {
+    static std::map<std::string, std::string, std::less<>> names;
+    return names;
+}
+
 std::string formatNumber(double v) {
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%g", v);
     return buffer;
 }
 
-bool parseNumber(const std::string& text, double* value) {
-    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), *value);
-    return ec == std::errc() && end == text.data() + text.size();
+// A flag's value as it was typed: whole numbers in full (1000000, not 1e+06).
+std::string flagValueText(double v) {
+    return v == std::floor(v) && std::fabs(v) < 1e15 ? std::to_string(static_cast<long long>(v)) : formatNumber(v);
 }
 
 }  // namespace
@@ -59,12 +66,21 @@ std::string AcceleratorOption::rangeText() const {
     return formatNumber(min) + ".." + formatNumber(max);
 }
 
-const std::string& AcceleratorParameters::word(const std::string& key) const { return values_.at(key); }
+std::optional<AcceleratorValue> AcceleratorOption::parse(const std::string& text) const {
+    if (!words.empty()) return text;
+    double number = 0.0;
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), number);
+    if (ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+    return number;
+}
 
-double AcceleratorParameters::number(const std::string& key) const {
-    double value = 0.0;
-    parseNumber(values_.at(key), &value);  // validated when the parameters were made
-    return value;
+bool AcceleratorOption::accepts(const AcceleratorValue& value) const {
+    if (!words.empty()) {
+        const std::string* word = std::get_if<std::string>(&value);
+        return word && std::find(words.begin(), words.end(), *word) != words.end();
+    }
+    const double* number = std::get_if<double>(&value);
+    return number && *number >= min && *number <= max && (!integer || *number == std::floor(*number));
 }
 
 const AcceleratorOption* AcceleratorType::option(std::string_view key) const {
@@ -73,9 +89,12 @@ const AcceleratorOption* AcceleratorType::option(std::string_view key) const {
     return nullptr;
 }
 
-AcceleratorParameters AcceleratorType::parameters(const std::string& text, const std::string& fullName) const {
+AcceleratorParameters AcceleratorType::parameters(const std::string& text, const AcceleratorSpec& spec) const {
+    const std::string& fullName = spec.name;
+    for (const AcceleratorSpec::FlagSetting& flag : spec.flags)
+        if (!option(flag.key)) throw Error(flag.flag + " is not an option of " + fullName + " (its structure has no '" + flag.key + "')");
     AcceleratorParameters parameters;
-    for (const AcceleratorOption& o : options) parameters.values_[o.key] = o.defaultValue;
+    for (const AcceleratorOption& o : options) parameters.values_[o.key] = *o.parse(o.defaultValue);
     std::vector<std::string> seen;
     size_t begin = 0;
     while (begin < text.size()) {
@@ -94,16 +113,22 @@ AcceleratorParameters AcceleratorType::parameters(const std::string& text, const
             throw Error("--accel " + fullName + ": " + key + " is given twice");
         seen.push_back(key);
         std::string value = item.substr(equals + 1);
-        double number = 0.0;
-        bool valid = o->words.empty()
-                         ? parseNumber(value, &number) && number >= o->min && number <= o->max &&
-                               (!o->integer || number == double(static_cast<long>(number)))
-                         : std::find(o->words.begin(), o->words.end(), value) != o->words.end();
-        if (!valid)
+        std::optional<AcceleratorValue> typed = o->parse(value);
+        if (!typed || !o->accepts(*typed))
             throw Error("--accel " + fullName + ": " + key + " must be " +
                         (o->words.empty() ? std::string(o->integer ? "an integer in " : "a number in ") : "one of ") +
                         o->rangeText() + ", not '" + value + "'");
-        parameters.values_[key] = value;
+        parameters.values_[key] = *typed;
+    }
+    // A flag wins over the name: `--accel bvh:leaf=2 --max-leaf 8` builds leaves of 8.
+    for (const AcceleratorSpec::FlagSetting& flag : spec.flags) {
+        const AcceleratorOption* o = option(flag.key);
+        if (!o->accepts(flag.value)) {
+            const double* number = std::get_if<double>(&flag.value);
+            throw Error(number ? flag.flag + " " + flagValueText(*number) + " is out of range (" + o->rangeText() + ")"
+                               : flag.flag + " is not one of " + o->rangeText());
+        }
+        parameters.values_[flag.key] = flag.value;
     }
     return parameters;
 }
@@ -114,6 +139,15 @@ void registerAcceleratorType(AcceleratorType type) {
         std::abort();
     }
     registered().push_back(std::move(type));
+}
+
+AcceleratorsElsewhere::AcceleratorsElsewhere(std::vector<std::string> names, std::string where) {
+    for (std::string& name : names) elsewhere()[std::move(name)] = where;
+}
+
+const std::string* whereAcceleratorIs(std::string_view name) {
+    auto found = elsewhere().find(name);
+    return found == elsewhere().end() ? nullptr : &found->second;
 }
 
 const AcceleratorType* findAcceleratorType(std::string_view name) {

@@ -50,14 +50,16 @@ BvhOptions bvhOptionsFrom(const AcceleratorParameters& parameters) {
     return options;
 }
 
+std::unique_ptr<Accelerator> BvhAccelerator::create(const AcceleratorParameters& p) {
+    return std::make_unique<BvhAccelerator>(bvhOptionsFrom(p), p.word("traversal") == "recursive");
+}
+
 AcceleratorType bvhType() {
     std::vector<AcceleratorOption> options = bvhTreeOptions();
     options.push_back({"traversal", "ordered (near child first) or recursive (the lecture's pseudocode)", "ordered", 0, 0,
                        false, {"ordered", "recursive"}});
     AcceleratorType type{"bvh", "binary BVH (a1, a2)", options,
-            [](const AcceleratorParameters& p) {
-                return std::make_unique<BvhAccelerator>(bvhOptionsFrom(p), p.word("traversal") == "recursive");
-            },
+            BvhAccelerator::create,
             {"bvh-median", "bvh-middle", "bvh-equal", "bvh-sah", "bvh-buckets:4", "bvh-buckets:8", "bvh-buckets:12",
              "bvh-buckets:16", "bvh-buckets:32"}};
     type.draw = drawBvh;

@@ -23,6 +23,8 @@ class BvhAccelerator final : public Accelerator {
 public:
     BvhAccelerator(const BvhOptions& options, bool recursiveTraversal)
         : options_(options), recursiveTraversal_(recursiveTraversal) {}
+    // Reads the registry's BVH options (split, B, leaf, axes, traversal).
+    static std::unique_ptr<Accelerator> create(const AcceleratorParameters& parameters);
 
     void build(const PrimitiveSet& primitives) override;
     Hit intersect(const Ray& ray, TraversalStats& stats) const override;

@@ -13,14 +13,6 @@ struct ParsedName {
     std::string options;  // "k=v,k=v"
 };
 
-// True for the name of a structure of fast/, which this executable may have been linked
-// without: a wide BVH ("bvh" and a width, e.g. "bvh4", or fastbvh) or the tuned grid.
-bool isFastPathName(std::string_view name) {
-    bool wideBvh = name.size() > 3 && name.starts_with("bvh") &&
-                   std::all_of(name.begin() + 3, name.end(), [](char c) { return c >= '0' && c <= '9'; });
-    return wideBvh || name == "fastbvh" || name == "fastgrid";
-}
-
 ParsedName parseName(const std::string& name) {
     size_t colon = name.find(':');
     std::string base = name.substr(0, colon);
@@ -40,8 +32,8 @@ ParsedName parseName(const std::string& name) {
             base = typeName;
         }
     }
-    if (!parsed.type && isFastPathName(base))
-        throw Error("--accel " + name + ": " + base + " is a fast path of fast/, built only into rtlab-solution and the benchmarks");
+    if (const std::string* where = parsed.type ? nullptr : whereAcceleratorIs(base))
+        throw Error("--accel " + name + ": " + base + " is " + *where);
     if (!parsed.type) {
         std::string names;
         for (const AcceleratorType* type : acceleratorTypes()) names += (names.empty() ? "" : ", ") + type->name;
@@ -50,24 +42,27 @@ ParsedName parseName(const std::string& name) {
     return parsed;
 }
 
-// A flag of the command line set to something other than its default names an option the
-// structure must have; it overrides the name's value.
-void applyFlag(const AcceleratorType& type, const std::string& name, std::string& options, const char* key,
-               const std::string& value, const std::string& flag) {
-    if (!type.option(key)) throw Error(flag + " is not an option of " + name + " (its structure has no '" + key + "')");
-    // Replace a value the name gave, so the flag wins and the key is not given twice.
-    std::string rebuilt;
-    size_t begin = 0;
-    while (begin < options.size()) {
-        size_t end = std::min(options.find(',', begin), options.size());
-        std::string item = options.substr(begin, end - begin);
-        if (!item.starts_with(std::string(key) + "=")) rebuilt += (rebuilt.empty() ? "" : ",") + item;
-        begin = end + 1;
-    }
-    options = rebuilt + (rebuilt.empty() ? "" : ",") + key + "=" + value;
+template <typename Value>
+AcceleratorSpec& setFlag(AcceleratorSpec& spec, const std::string& flag, const std::string& key, Value value) {
+    std::erase_if(spec.flags, [&key](const AcceleratorSpec::FlagSetting& f) { return f.key == key; });
+    spec.flags.push_back({flag, key, AcceleratorValue(std::move(value))});
+    return spec;
 }
 
 }  // namespace
+
+AcceleratorSpec& AcceleratorSpec::set(const std::string& flag, const std::string& key, double number) {
+    return setFlag(*this, flag, key, number);
+}
+
+AcceleratorSpec& AcceleratorSpec::set(const std::string& flag, const std::string& key, const std::string& word) {
+    return setFlag(*this, flag, key, word);
+}
+
+const AcceleratorSpec::FlagSetting* AcceleratorSpec::flagSetting(std::string_view key) const {
+    auto found = std::find_if(flags.begin(), flags.end(), [key](const FlagSetting& f) { return f.key == key; });
+    return found == flags.end() ? nullptr : &*found;
+}
 
 std::string acceleratorNames() {
     std::string text;
@@ -82,17 +77,14 @@ std::string acceleratorNames() {
 
 const AcceleratorType& acceleratorTypeOf(const std::string& name) { return *parseName(name).type; }
 
-std::unique_ptr<Accelerator> makeAccelerator(const AcceleratorSpec& spec) {
-    if (spec.maxLeaf < 1 || spec.maxLeaf > 65535)
-        throw Error("--max-leaf " + std::to_string(spec.maxLeaf) + " is out of range (1..65535)");
+AcceleratorChoice chooseAccelerator(const AcceleratorSpec& spec) {
     ParsedName parsed = parseName(spec.name);
-    const AcceleratorSpec defaults;
-    if (spec.maxLeaf != defaults.maxLeaf)
-        applyFlag(*parsed.type, spec.name, parsed.options, "leaf", std::to_string(spec.maxLeaf), "--max-leaf");
-    if (spec.recursiveTraversal)
-        applyFlag(*parsed.type, spec.name, parsed.options, "traversal", "recursive", "--traversal recursive");
-    if (spec.sahAllAxes) applyFlag(*parsed.type, spec.name, parsed.options, "axes", "all", "--sah-axes all");
-    return parsed.type->make(parsed.type->parameters(parsed.options, spec.name));
+    return {parsed.type, parsed.type->parameters(parsed.options, spec)};
+}
+
+std::unique_ptr<Accelerator> makeAccelerator(const AcceleratorSpec& spec) {
+    AcceleratorChoice choice = chooseAccelerator(spec);
+    return choice.type->make(choice.parameters);
 }
 
 }  // namespace rtlab

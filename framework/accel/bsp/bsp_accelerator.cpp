@@ -24,6 +24,13 @@ bool BspAccelerator::occluded(const Ray& ray, TraversalStats& stats) const {
     return BspAdapter::occluded(tree_, traversal);
 }
 
+std::unique_ptr<Accelerator> BspAccelerator::create(const AcceleratorParameters& p) {
+    BspOptions options;
+    options.maxPrims = static_cast<uint32_t>(p.integer("leaf"));
+    options.maxDepth = p.integer("depth");
+    return std::make_unique<BspAccelerator>(options);
+}
+
 StructureView BspAccelerator::structure() const { return bspStructureView(tree_); }
 
 StructureView bspStructureView(const BspTree& tree) {
@@ -51,12 +58,7 @@ AcceleratorType bspType() {
             "BSP tree on the triangles' own planes, an autopartition (a5, optional)",
             {{"leaf", "a cell with at most this many primitives is a leaf", "2", 1, 65535, true, {}},
              {"depth", "depth limit", "40", 1, kBspMaxDepthLimit, true, {}}},
-            [](const AcceleratorParameters& p) {
-                BspOptions options;
-                options.maxPrims = static_cast<uint32_t>(p.integer("leaf"));
-                options.maxDepth = p.integer("depth");
-                return std::make_unique<BspAccelerator>(options);
-            },
+            BspAccelerator::create,
             {}};  // no bench rows: an autopartition is taught, not tuned
     type.draw = [](const StructureView& view, const NodeMask& drawn) {
         StructureDrawing drawing = drawPlanes(view, drawn);

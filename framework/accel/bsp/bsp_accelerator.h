@@ -3,6 +3,7 @@
 #pragma once
 
 #include "framework/accel/accelerator.h"
+#include "framework/accel/accelerator_registry.h"
 #include "framework/interface/bsp.h"
 
 namespace rtlab {
@@ -14,6 +15,8 @@ StructureView bspStructureView(const BspTree& tree);
 class BspAccelerator final : public Accelerator {
 public:
     explicit BspAccelerator(const BspOptions& options) : options_(options) {}
+    // Reads the registry's BSP options (leaf, depth).
+    static std::unique_ptr<Accelerator> create(const AcceleratorParameters& parameters);
 
     void build(const PrimitiveSet& primitives) override;
     Hit intersect(const Ray& ray, TraversalStats& stats) const override;

@@ -25,6 +25,13 @@ bool GridAccelerator::occluded(const Ray& ray, TraversalStats& stats) const {
     return GridAdapter::occluded(grid_, traversal);
 }
 
+std::unique_ptr<Accelerator> GridAccelerator::create(const AcceleratorParameters& p) {
+    GridOptions options;
+    options.cellsPerPrimitive = p.number("C");
+    options.maxResolution = p.integer("res");
+    return std::make_unique<GridAccelerator>(options, p.word("insert") == "exact" ? GridInsertion::Exact : GridInsertion::Box);
+}
+
 StructureView GridAccelerator::structure() const {
     return gridStructureView(grid_, grid_.cellStart, grid_.primIndices);
 }
@@ -36,12 +43,7 @@ AcceleratorType gridType() {
              {"res", "most cells along any axis", "64", 1, 1024, true, {}},
              {"insert", "a triangle into every cell of its box, or only those its surface overlaps (a4's test)", "box", 0, 0, false,
               {"box", "exact"}}},
-            [](const AcceleratorParameters& p) {
-                GridOptions options;
-                options.cellsPerPrimitive = p.number("C");
-                options.maxResolution = p.integer("res");
-                return std::make_unique<GridAccelerator>(options, p.word("insert") == "exact" ? GridInsertion::Exact : GridInsertion::Box);
-            },
+            GridAccelerator::create,
             {"grid:C=1", "grid:C=3", "grid:C=9", "grid:C=27", "grid:C=81", "grid:insert=exact"}};
     type.draw = drawCells;  // the occupied cells, by how many primitives they hold
     return type;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "framework/accel/accelerator.h"
+#include "framework/accel/accelerator_registry.h"
 #include "framework/accel/grid/grid_adapter.h"
 #include "framework/interface/grid.h"
 
@@ -13,6 +14,8 @@ namespace rtlab {
 class GridAccelerator final : public Accelerator {
 public:
     GridAccelerator(const GridOptions& options, GridInsertion insertion) : options_(options), insertion_(insertion) {}
+    // Reads the registry's grid options (C, res, insert).
+    static std::unique_ptr<Accelerator> create(const AcceleratorParameters& parameters);
 
     void build(const PrimitiveSet& primitives) override;
     Hit intersect(const Ray& ray, TraversalStats& stats) const override;

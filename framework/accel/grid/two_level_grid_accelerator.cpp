@@ -30,6 +30,14 @@ size_t TwoLevelGridAccelerator::memoryBytes() const {
     return words * sizeof(uint32_t) + grid_.children.size() * sizeof(UniformGrid);
 }
 
+std::unique_ptr<Accelerator> TwoLevelGridAccelerator::create(const AcceleratorParameters& p) {
+    GridOptions top, child;
+    top.cellsPerPrimitive = p.number("top");
+    child.cellsPerPrimitive = p.number("C");
+    top.maxResolution = child.maxResolution = p.integer("res");
+    return std::make_unique<TwoLevelGridAccelerator>(top, child, static_cast<uint32_t>(p.integer("refine")));
+}
+
 StructureView TwoLevelGridAccelerator::structure() const {
     StructureView view;
     auto addGrid = [&view](const UniformGrid& grid, uint32_t parent) {
@@ -73,13 +81,7 @@ AcceleratorType twoLevelGridType() {
              {"C", "cells per primitive of each child grid", "27", 1, 1000, false, {}},
              {"res", "most cells along any axis of either level", "64", 1, 1024, true, {}},
              {"refine", "a top cell with more primitives than this gets a child grid", "8", 1, 1000000, true, {}}},
-            [](const AcceleratorParameters& p) {
-                GridOptions top, child;
-                top.cellsPerPrimitive = p.number("top");
-                child.cellsPerPrimitive = p.number("C");
-                top.maxResolution = child.maxResolution = p.integer("res");
-                return std::make_unique<TwoLevelGridAccelerator>(top, child, static_cast<uint32_t>(p.integer("refine")));
-            },
+            TwoLevelGridAccelerator::create,
             {"grid2"}};
     type.draw = drawCells;  // the occupied cells of both levels
     return type;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "framework/accel/accelerator.h"
+#include "framework/accel/accelerator_registry.h"
 #include "framework/interface/grid.h"
 
 namespace rtlab {
@@ -10,6 +11,8 @@ class TwoLevelGridAccelerator final : public Accelerator {
 public:
     TwoLevelGridAccelerator(const GridOptions& top, const GridOptions& child, uint32_t refineAbove)
         : top_(top), child_(child), refineAbove_(refineAbove) {}
+    // Reads the registry's two-level grid options (top, C, res, refine).
+    static std::unique_ptr<Accelerator> create(const AcceleratorParameters& parameters);
 
     void build(const PrimitiveSet& primitives) override;
     Hit intersect(const Ray& ray, TraversalStats& stats) const override;

@@ -23,6 +23,14 @@ bool KdTreeAccelerator::occluded(const Ray& ray, TraversalStats& stats) const {
     return KdTreeAdapter::occluded(tree_, traversal);
 }
 
+std::unique_ptr<Accelerator> KdTreeAccelerator::create(const AcceleratorParameters& p) {
+    KdTreeOptions options;
+    options.costs = KdCosts{p.number("KT"), p.number("KI"), p.number("eb")};
+    options.maxPrims = static_cast<uint32_t>(p.integer("leaf"));
+    options.maxDepth = p.integer("depth");
+    return std::make_unique<KdTreeAccelerator>(options, p.word("build") == "sort" ? KdBuilder::Sort : KdBuilder::NlogN);
+}
+
 StructureView KdTreeAccelerator::structure() const { return kdTreeStructureView(tree_); }
 
 AcceleratorType kdTreeType() {
@@ -35,13 +43,7 @@ AcceleratorType kdTreeType() {
              {"eb", "empty-space bonus: the share of a split's cost forgiven when a side is empty", "0.5", 0, 1, false, {}},
              {"leaf", "a node with at most this many primitives is a leaf (maxPrims)", "1", 1, 65535, true, {}},
              {"depth", "depth limit; 0: round(8 + 1.3 floor(log2 N))", "0", 0, kKdMaxDepthLimit, true, {}}},
-            [](const AcceleratorParameters& p) {
-                KdTreeOptions options;
-                options.costs = KdCosts{p.number("KT"), p.number("KI"), p.number("eb")};
-                options.maxPrims = static_cast<uint32_t>(p.integer("leaf"));
-                options.maxDepth = p.integer("depth");
-                return std::make_unique<KdTreeAccelerator>(options, p.word("build") == "sort" ? KdBuilder::Sort : KdBuilder::NlogN);
-            },
+            KdTreeAccelerator::create,
             {"kdtree", "kdtree:build=sort"}};
     type.draw = drawPlanes;  // the split planes by depth, and the leaves
     return type;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "framework/accel/accelerator.h"
+#include "framework/accel/accelerator_registry.h"
 #include "framework/accel/kdtree/kdtree_adapter.h"
 #include "framework/interface/kdtree.h"
 
@@ -18,6 +19,8 @@ StructureView kdTreeStructureView(const KdTree& tree);
 class KdTreeAccelerator final : public Accelerator {
 public:
     KdTreeAccelerator(const KdTreeOptions& options, KdBuilder builder) : options_(options), builder_(builder) {}
+    // Reads the registry's KD-tree options (build, KT, KI, eb, leaf, depth).
+    static std::unique_ptr<Accelerator> create(const AcceleratorParameters& parameters);
 
     void build(const PrimitiveSet& primitives) override;
     Hit intersect(const Ray& ray, TraversalStats& stats) const override;

@@ -25,6 +25,14 @@ bool OctreeAccelerator::occluded(const Ray& ray, TraversalStats& stats) const {
     return OctreeAdapter::occluded(octree_, traversal);
 }
 
+std::unique_ptr<Accelerator> OctreeAccelerator::create(const AcceleratorParameters& p) {
+    OctreeOptions options;
+    options.maxPrims = static_cast<uint32_t>(p.integer("maxPrims"));
+    options.maxDepth = p.integer("maxDepth");
+    options.insertion = p.word("insert") == "box" ? OctreeInsertion::Box : OctreeInsertion::Exact;
+    return std::make_unique<OctreeAccelerator>(options);
+}
+
 StructureView OctreeAccelerator::structure() const { return octreeStructureView(octree_); }
 
 StructureView octreeStructureView(const Octree& octree) {
@@ -43,13 +51,7 @@ AcceleratorType octreeType() {
             {{"maxPrims", "a node with more primitives is split", "8", 1, 65535, true, {}},
              {"maxDepth", "deepest level (the root is 0)", "10", 0, 20, true, {}},
              {"insert", "triangles into the children their surface overlaps, or their box", "exact", 0, 0, false, {"exact", "box"}}},
-            [](const AcceleratorParameters& p) {
-                OctreeOptions options;
-                options.maxPrims = static_cast<uint32_t>(p.integer("maxPrims"));
-                options.maxDepth = p.integer("maxDepth");
-                options.insertion = p.word("insert") == "box" ? OctreeInsertion::Box : OctreeInsertion::Exact;
-                return std::make_unique<OctreeAccelerator>(options);
-            },
+            OctreeAccelerator::create,
             {"octree", "octree:insert=box", "octree:maxDepth=16"}};
     type.draw = drawLevels;  // nodes by depth
     return type;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "framework/accel/accelerator.h"
+#include "framework/accel/accelerator_registry.h"
 #include "framework/interface/octree.h"
 
 #include <span>
@@ -22,6 +23,8 @@ StructureView octreeStructureView(const Octree& octree, std::span<const Bounds3f
 class OctreeAccelerator final : public Accelerator {
 public:
     explicit OctreeAccelerator(const OctreeOptions& options) : options_(options) {}
+    // Reads the registry's octree options (maxPrims, maxDepth, insert).
+    static std::unique_ptr<Accelerator> create(const AcceleratorParameters& parameters);
 
     void build(const PrimitiveSet& primitives) override;
     Hit intersect(const Ray& ray, TraversalStats& stats) const override;
