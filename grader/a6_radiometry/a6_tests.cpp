@@ -472,13 +472,14 @@ std::string judgeRun(const SamplerTarget& t, size_t run, const std::vector<worke
     std::vector<double> observed(t.expected(run).size(), 0.0);
     for (size_t i = 0; i < samples.size(); ++i) {
         const Vec3& v = samples[i].value;
-        std::string where = "sample " + std::to_string(i) + " " + vec(DVec3(v));
+        // Written only for the sample that fails: formatting every one cost more than judging it.
+        auto where = [&] { return "sample " + std::to_string(i) + " " + vec(DVec3(v)); };
         if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z) || !std::isfinite(samples[i].pdf))
-            return where + ": not finite (pdf " + formatNumber(samples[i].pdf) + ")";
-        if (t.directions && std::abs(glm::length(DVec3(v)) - 1.0) > 1e-4) return where + ": not of unit length";
+            return where() + ": not finite (pdf " + formatNumber(samples[i].pdf) + ")";
+        if (t.directions && std::abs(glm::length(DVec3(v)) - 1.0) > 1e-4) return where() + ": not of unit length";
         double density = t.pdf(run, v);
         if (std::abs(samples[i].pdf - density) > 1e-3 * density + 1e-6)
-            return where + ": pdf " + formatNumber(samples[i].pdf) + ", but the density of this sample is " + t.pdfFormula + " = " +
+            return where() + ": pdf " + formatNumber(samples[i].pdf) + ", but the density of this sample is " + t.pdfFormula + " = " +
                    formatNumber(density) + " (the pdf must be the one of the sample returned)";
         observed[t.cellOf(run, v)] += 1.0;
     }
