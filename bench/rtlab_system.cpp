@@ -1,7 +1,7 @@
 #include "bench/rtlab_system.h"
 
 #include "framework/accel/accelerator_registry.h"
-#include "framework/interface/bvh.h"
+#include "framework/accel/bvh_accelerator.h"
 
 #include <chrono>
 
@@ -9,7 +9,7 @@ namespace rtlab::bench {
 
 AcceleratorSpec withMaxLeaf(const std::string& name, int maxLeaf) {
     AcceleratorSpec spec{name};
-    if (maxLeaf != BvhOptions().maxLeaf) spec.set("--max-leaf", "leaf", maxLeaf);
+    setMaxLeaf(spec, maxLeaf);
     return spec;
 }
 

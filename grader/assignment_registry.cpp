@@ -8,7 +8,8 @@
 #include "grader/a5_kdtree/a5_tests.h"
 #include "grader/a6_radiometry/a6_tests.h"
 
-// The one list of graded assignments: an assignment is its folders and one line here.
+// The one list of graded assignments: an assignment is its folders, its entry here and the
+// entry's include (docs/adding-an-assignment.md).
 namespace rtlab::grader {
 
 const std::vector<Assignment>& assignments() {

@@ -278,18 +278,18 @@ void computeExpected(RaySet& set, const Scene& scene) {
 }
 
 // A name with the options render's flags would set (--traversal recursive, --sah-axes all,
-// --max-leaf), each set only away from its default, as the flags do.
+// --max-leaf), set as the flags set them (bvh_accelerator.h).
 struct AcceleratorCase {
     AcceleratorSpec spec;
     bool recursive = false;
     bool allAxes = false;
     int maxLeaf = 4;
 
-    AcceleratorCase(const std::string& name, bool recursive = false, bool allAxes = false, int maxLeaf = 4)
-        : spec{name}, recursive(recursive), allAxes(allAxes), maxLeaf(maxLeaf) {
-        if (recursive) spec.set("--traversal recursive", "traversal", "recursive");
-        if (allAxes) spec.set("--sah-axes all", "axes", "all");
-        if (maxLeaf != 4) spec.set("--max-leaf", "leaf", maxLeaf);
+    AcceleratorCase(const std::string& name, bool recursiveWalk = false, bool everyAxis = false, int leafSize = 4)
+        : spec{name}, recursive(recursiveWalk), allAxes(everyAxis), maxLeaf(leafSize) {
+        setTraversal(spec, recursive ? "recursive" : "ordered");
+        setSahAxes(spec, allAxes ? "all" : "longest");
+        setMaxLeaf(spec, maxLeaf);
     }
     std::string label() const {
         return spec.name + (recursive ? " recursive" : " ordered") + (allAxes ? " all-axes" : "") + " maxLeaf " +

@@ -33,6 +33,13 @@ TEST_CASE("pristine stubs: a git checkout gives the committed files, not the wor
     auto stubs = rtlab::grader::pristineStubs(repo.string());
     CHECK(stubs.size() == 1);
     CHECK(stubs["assignments/a0_intersect/ray_box.cpp"] == "committed stub\n");
+    // A folder the graded tests call must have a committed stub: an assignment added but not
+    // yet committed is named, with what to do. A folder whose name starts like it is not it.
+    write(repo / "assignments/a0_intersect_more/extra.cpp", "never committed\n");
+    CHECK(rtlab::grader::pristineStubs(repo.string(), {"a0_intersect"}).size() == 1);
+    CHECK_THROWS_WITH(rtlab::grader::pristineStubs(repo.string(), {"a0_intersect", "a0_inter"}),
+                      doctest::Contains("assignments/a0_inter/ has no committed stub; submissions are built against the stubs at git's HEAD, so commit it first"));
+    fs::remove_all(repo / "assignments/a0_intersect_more");
 
     fs::remove_all(repo / ".git");  // an archive: what is there was made from committed files
     stubs = rtlab::grader::pristineStubs(repo.string());

@@ -21,7 +21,7 @@ namespace {
 
 std::unique_ptr<Accelerator> built(const std::string& name, const PrimitiveSet& prims, int maxLeaf = 4) {
     AcceleratorSpec spec{name};
-    if (maxLeaf != 4) spec.set("--max-leaf", "leaf", maxLeaf);
+    setMaxLeaf(spec, maxLeaf);
     auto accel = makeAccelerator(spec);
     accel->build(prims);
     return accel;

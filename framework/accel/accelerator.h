@@ -49,7 +49,7 @@ struct AcceleratorSpec {
     };
 
     std::string name = "bvh-buckets";
-    std::vector<FlagSetting> flags;
+    std::vector<FlagSetting> flags = {};  // initialised, so AcceleratorSpec{name} says every member
 
     // Sets key as flag does, over the name's value and any earlier flag's.
     AcceleratorSpec& set(const std::string& flag, const std::string& key, double number);

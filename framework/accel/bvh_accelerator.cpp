@@ -50,6 +50,18 @@ BvhOptions bvhOptionsFrom(const AcceleratorParameters& parameters) {
     return options;
 }
 
+void setMaxLeaf(AcceleratorSpec& spec, int maxLeaf) {
+    if (maxLeaf != BvhOptions().maxLeaf) spec.set("--max-leaf", "leaf", maxLeaf);
+}
+
+void setTraversal(AcceleratorSpec& spec, const std::string& order) {
+    if (order == "recursive") spec.set("--traversal recursive", "traversal", order);
+}
+
+void setSahAxes(AcceleratorSpec& spec, const std::string& axes) {
+    if (axes == "all") spec.set("--sah-axes all", "axes", axes);
+}
+
 std::unique_ptr<Accelerator> BvhAccelerator::create(const AcceleratorParameters& p) {
     return std::make_unique<BvhAccelerator>(bvhOptionsFrom(p), p.word("traversal") == "recursive");
 }

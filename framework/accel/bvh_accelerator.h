@@ -19,6 +19,13 @@ StructureDrawing drawBvh(const StructureView& view, const NodeMask& drawn);
 // The tree options of a bvh, bvh4 or bvh8 name (split, B, leaf, axes).
 BvhOptions bvhOptionsFrom(const AcceleratorParameters& parameters);
 
+// The BVH's flags as the command line sets them (--max-leaf, --traversal, --sah-axes): each only
+// away from its default, so a flag left at its default may be given for a structure without the
+// option, and a value in the name (bvh-sah,leaf=8) stands.
+void setMaxLeaf(AcceleratorSpec& spec, int maxLeaf);
+void setTraversal(AcceleratorSpec& spec, const std::string& order);  // "ordered" or "recursive"
+void setSahAxes(AcceleratorSpec& spec, const std::string& axes);     // "longest" or "all"
+
 class BvhAccelerator final : public Accelerator {
 public:
     BvhAccelerator(const BvhOptions& options, bool recursiveTraversal)

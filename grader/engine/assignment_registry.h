@@ -1,6 +1,6 @@
 // The one list of graded assignments. Adding an assignment is its folders (assignments/,
 // solutions/, its interface header, its grader tests and rubric part, its docs page) and one
-// line in grader/assignment_registry.cpp.
+// entry, with its include, in grader/assignment_registry.cpp (docs/adding-an-assignment.md).
 #pragma once
 
 #include "grader/engine/stub_table.h"

@@ -33,7 +33,7 @@ bool isStubSource(const std::string& path) {
 
 }  // namespace
 
-std::map<std::string, std::string> pristineStubs(const std::string& sourceDir) {
+std::map<std::string, std::string> pristineStubs(const std::string& sourceDir, const std::vector<std::string>& folders) {
     std::map<std::string, std::string> stubs;
     if (fs::exists(fs::path(sourceDir) / ".git")) {
         std::istringstream names(git(sourceDir, {"ls-tree", "-r", "--name-only", "HEAD", "--", "assignments/"}));
@@ -50,6 +50,12 @@ std::map<std::string, std::string> pristineStubs(const std::string& sourceDir) {
         }
     }
     if (stubs.empty()) throw Error(sourceDir + ": no committed stubs under assignments/");
+    for (const std::string& folder : folders) {
+        const std::string prefix = "assignments/" + folder + "/";
+        auto first = stubs.lower_bound(prefix);
+        if (first == stubs.end() || first->first.compare(0, prefix.size(), prefix) != 0)
+            throw Error(sourceDir + ": " + prefix + " has no committed stub; submissions are built against the stubs at git's HEAD, so commit it first");
+    }
     return stubs;
 }
 

@@ -7,11 +7,13 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace rtlab::grader {
 
 // Repository path ("assignments/a0_intersect/ray_box.cpp") -> contents. Throws rtlab::Error
-// when the stubs cannot be read.
-std::map<std::string, std::string> pristineStubs(const std::string& sourceDir);
+// when the stubs cannot be read, or when one of `folders` (of assignments/) has none: an
+// assignment added to the tree but not yet committed.
+std::map<std::string, std::string> pristineStubs(const std::string& sourceDir, const std::vector<std::string>& folders = {});
 
 }  // namespace rtlab::grader

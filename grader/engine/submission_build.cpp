@@ -2,7 +2,6 @@
 
 #include "framework/core/error.h"
 #include "grader/engine/compile_sandbox.h"
-#include "grader/engine/pristine_stubs.h"
 #include "grader/engine/stub_object_cache.h"
 #include "grader/engine/submission_files.h"
 #include "grader/engine/worker_compile.h"
@@ -114,8 +113,9 @@ std::map<std::string, std::string> takeUngraded(std::map<std::string, std::strin
 
 }  // namespace
 
-SubmissionBuild buildSubmission(const std::string& submissionDir, const std::string& sourceDir, const std::string& toolchainPath,
-                                const std::string& workDir, const CompileLimits& limits, const std::vector<std::string>& gradedFolders) {
+SubmissionBuild buildSubmission(const std::string& submissionDir, const std::string& sourceDir, std::map<std::string, std::string> stubs,
+                                const std::string& toolchainPath, const std::string& workDir, const CompileLimits& limits,
+                                const std::vector<std::string>& gradedFolders) {
     SubmissionFolder submission(submissionDir);
     nlohmann::json toolchain = readToolchain(toolchainPath);
     const CompileSandbox& sandbox = CompileSandbox::detect();
@@ -134,7 +134,6 @@ SubmissionBuild buildSubmission(const std::string& submissionDir, const std::str
     fs::copy_file(toolchain.at("worker_runtime").get<std::string>(), fs::path(host.objects) / "worker-runtime.o",
                   fs::copy_options::overwrite_existing);
     copyStudentHeaders(sourceDir, host.headers);
-    auto stubs = pristineStubs(sourceDir);
     // The assignments not graded link their committed stubs, compiled once for every grading
     // run; if that object cannot be had, they compile with the submission as before.
     auto ungraded = takeUngraded(stubs, gradedFolders);

@@ -5,6 +5,7 @@
 // tree's compiled objects.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -22,13 +23,14 @@ struct CompileLimits {
     int memoryMiB = 4096;
 };
 
+// stubs: the committed stubs (pristine_stubs.h), for the files the submission lacks.
 // toolchainPath: build/grader/submission-toolchain.json; workDir: an empty directory.
 // gradedFolders: the assignments/ folders the graded tests call, taken from the submission; the
 // others link their committed stubs, compiled once (stub_object_cache.h); empty: every folder
 // from the submission. Throws rtlab::Error with one line when the submission cannot be read
 // (a symbolic link, an unreadable or oversized file).
-SubmissionBuild buildSubmission(const std::string& submissionDir, const std::string& sourceDir, const std::string& toolchainPath,
-                                const std::string& workDir, const CompileLimits& limits = {},
+SubmissionBuild buildSubmission(const std::string& submissionDir, const std::string& sourceDir, std::map<std::string, std::string> stubs,
+                                const std::string& toolchainPath, const std::string& workDir, const CompileLimits& limits = {},
                                 const std::vector<std::string>& gradedFolders = {});
 
 }  // namespace rtlab::grader

@@ -3,6 +3,7 @@
 #include "framework/core/error.h"
 #include "grader/engine/assignment_registry.h"
 #include "grader/engine/compile_sandbox.h"
+#include "grader/engine/pristine_stubs.h"
 #include "grader/engine/submission_build.h"
 
 #include <algorithm>
@@ -49,12 +50,17 @@ GradingReport gradeSubmission(const std::string& submissionDir, const Submission
     GradingOptions g = options.grading;
     g.implementation = "submission " + submissionDir;
     fs::create_directories(options.workDir);
+    // The grader's own stubs are read before the submission: a problem there (git, a new
+    // assignment not committed) is the instructor's, so it stops grading with its one line
+    // instead of failing the student's build test.
+    const std::vector<std::string> folders = gradedFolders(g.assignments);
+    std::map<std::string, std::string> stubs = pristineStubs(g.sourceDir, folders);
     TestResult buildTest = makeResult("build", "build");
     SubmissionBuild build;
     std::string unreadable;
     try {
-        build = buildSubmission(submissionDir, g.sourceDir, options.toolchainPath, options.workDir + "/build", g.compile,
-                                gradedFolders(g.assignments));
+        build = buildSubmission(submissionDir, g.sourceDir, std::move(stubs), options.toolchainPath, options.workDir + "/build", g.compile,
+                                folders);
     } catch (const Error& e) {
         unreadable = e.what();
     }

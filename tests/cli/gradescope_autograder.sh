@@ -8,11 +8,7 @@
 set -eu
 build=$1
 source=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
-
-. "$source/tests/cli/scratch_repository.sh"
+. "$source/tests/cli/scratch_repository.sh"  # $work, fail
 repo=$work/repo
 scratch_repository "$source" "$repo"
 

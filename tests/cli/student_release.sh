@@ -8,11 +8,7 @@
 set -eu
 build=$1
 source=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
-
-. "$source/tests/cli/scratch_repository.sh"
+. "$source/tests/cli/scratch_repository.sh"  # $work, fail
 repo=$work/repo
 scratch_repository "$source" "$repo"
 marker=$UNCOMMITTED_MARKER
@@ -48,8 +44,9 @@ if "$build/rtlab" release --from "$repo" "$release" 2> "$work/refused.err"; then
 after=$(cd "$release" && find . -path ./.git -prune -o -type f -print | sort | xargs sha256sum | sha256sum)
 [ "$before" = "$after" ] || fail "the refused release changed the folder"
 
-# Configure and build as `make grade` does (cmake --preset release), then grade the stubs.
-(cd "$release" && cmake --preset release > "$work/configure.log" 2>&1) || fail "the release does not configure: $(tail -5 "$work/configure.log")"
+# Configure and build as `make grade` does (cmake --preset release), with this build's compiler
+# cache (only what the release changes compiles), then grade the stubs.
+(cd "$release" && cmake --preset release -DRTLAB_COMPILER_CACHE="$build/compiler-cache" > "$work/configure.log" 2>&1) || fail "the release does not configure: $(tail -5 "$work/configure.log")"
 nice cmake --build "$release/build" -j 2 > "$work/build.log" 2>&1 || fail "the release does not build: $(grep -m3 error "$work/build.log")"
 [ ! -e "$release/build/rtlab-solution" ] || fail "the release built an rtlab-solution"
 # The same models for both, so both grade the same tests (the bunny's, if it is there).
