@@ -11,6 +11,7 @@
 #include <map>
 #include <random>
 #include <set>
+#include <utility>
 #include <unistd.h>
 
 namespace rtlab::grader {
@@ -152,13 +153,22 @@ GradingReport gradeWorker(const GradingOptions& options, std::vector<TestResult>
     TimeoutStrikes strikes;
     bool terminal = options.progress && isatty(STDERR_FILENO);
     std::set<std::string> notStarted;
+    // While a group runs, the next one's worker starts (sandbox.h, StartedWorker).
+    auto startAhead = [&](size_t i) {
+        bool runs = i < groups.size() && options.unavailableWorker.empty() && !groups[i].phases.empty() &&
+                    !allNotStarted(defined[i], notStarted);
+        return runs ? std::optional<StartedWorker>(std::in_place, worker, groups[i].phases) : std::nullopt;
+    };
+    std::optional<StartedWorker> next = startAhead(0);
     for (size_t i = 0; i < groups.size(); ++i) {
         const TestGroup& group = groups[i];
+        std::optional<StartedWorker> current = std::exchange(next, std::nullopt);
         if (allNotStarted(defined[i], notStarted)) continue;
         if (terminal) std::cerr << "\r\033[K[" << i + 1 << "/" << groups.size() << "] " << group.title << std::flush;
+        next = startAhead(i + 1);
         SandboxRun run;
         if (!options.unavailableWorker.empty()) run = unavailableWorkerRun(group.phases.size(), options.unavailableWorker);
-        else if (!group.phases.empty()) run = runSandboxed(worker, group.phases, &strikes);
+        else if (!group.phases.empty()) run = runSandboxed(worker, group.phases, &strikes, std::move(current));
         size_t first = report.tests.size();
         scoreDefinedTests(group, run, defined[i], report.tests);
         for (size_t k = first; k < report.tests.size(); ++k)

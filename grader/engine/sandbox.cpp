@@ -1,6 +1,7 @@
 #include "grader/engine/sandbox.h"
 
 #include "framework/core/error.h"
+#include "grader/engine/request_queue.h"
 #include "grader/engine/sandbox_start.h"
 #include "grader/engine/system_call_filter.h"
 #include "grader/engine/worker_conversation.h"
@@ -21,6 +22,7 @@
 #include <thread>
 #include <time.h>
 #include <unistd.h>
+#include <utility>
 
 namespace rtlab::grader {
 namespace {
@@ -60,7 +62,7 @@ std::optional<double> processCpuSeconds(pid_t pid) {
 
 // Spawns rtlab-sandbox-start with the worker's pipes on descriptors 0-3 (sandbox_start.h).
 // posix_spawn shares the grader's memory until the exec instead of copying its page tables.
-pid_t spawnWorker(const WorkerSpec& spec, int requestFd, int resultFd, int outputFd, uint64_t addressSpace) {
+pid_t spawnSandboxStart(const WorkerSpec& spec, int requestFd, int resultFd, int outputFd, uint64_t addressSpace) {
     SandboxStart start{spec.path, addressSpace, static_cast<uint64_t>(spec.limits.cpuSeconds), getpid()};
     std::vector<std::string> arguments = sandboxStartArguments(start);
     std::vector<char*> argv;
@@ -83,6 +85,34 @@ pid_t spawnWorker(const WorkerSpec& spec, int requestFd, int resultFd, int outpu
     return pid;
 }
 
+// A pipe of 1 MiB instead of 64 KiB carries a phase's input (up to megabytes of triangles
+// and rays) in a sixteenth of the wake-ups; a kernel that refuses keeps the default.
+constexpr int kPipeBytes = 1 << 20;
+
+// Starts a worker whose address space allows its base, the memory limit and twice the input
+// of each phase it may be asked to run.
+StartedWorker::Process spawnWorker(const WorkerSpec& spec, std::span<const ChildPhase> phases, std::span<const size_t> order) {
+    uint64_t addressSpace = (kWorkerBaseMiB + uint64_t(spec.limits.memoryMiB)) << 20;
+    for (size_t k : order) addressSpace += 2 * phases[k].input.size();
+    int requestPipe[2], resultPipe[2], outputPipe[2];
+    if (pipe2(requestPipe, O_CLOEXEC) != 0 || pipe2(resultPipe, O_CLOEXEC) != 0 || pipe2(outputPipe, O_CLOEXEC) != 0)
+        throw Error(std::string("grader: cannot create a pipe: ") + std::strerror(errno));
+    fcntl(requestPipe[1], F_SETPIPE_SZ, kPipeBytes);
+    fcntl(resultPipe[1], F_SETPIPE_SZ, kPipeBytes);
+    pid_t pid = spawnSandboxStart(spec, requestPipe[0], resultPipe[1], outputPipe[1], addressSpace);
+    close(requestPipe[0]);
+    close(resultPipe[1]);
+    close(outputPipe[1]);
+    fcntl(requestPipe[1], F_SETFL, O_NONBLOCK);
+    return {pid, requestPipe[1], resultPipe[0], outputPipe[0]};
+}
+
+std::vector<size_t> allPhases(size_t count) {
+    std::vector<size_t> order(count);
+    for (size_t k = 0; k < count; ++k) order[k] = k;
+    return order;
+}
+
 // The grader's side of one worker: streams the phases' requests, reads records until the
 // worker is done, dies or overruns a deadline.
 class WorkerSession {
@@ -90,27 +120,18 @@ public:
     WorkerSession(const WorkerSpec& spec, std::span<const ChildPhase> phases, SandboxRun& run)
         : spec_(spec), phases_(phases), run_(run), outcomes_(phases.size()), reported_(phases.size(), false) {}
 
-    // Runs phase 0 and then the phases in order.
-    void execute(std::vector<size_t> order) {
+    // Runs phase 0 and then the phases in order, in `started` if given, else in a new worker.
+    void execute(std::vector<size_t> order, std::optional<StartedWorker> started) {
         order_ = order;
         conversation_.emplace(std::move(order));
-        int requestPipe[2], resultPipe[2], outputPipe[2];
-        if (pipe2(requestPipe, O_CLOEXEC) != 0 || pipe2(resultPipe, O_CLOEXEC) != 0 || pipe2(outputPipe, O_CLOEXEC) != 0)
-            throw Error(std::string("grader: cannot create a pipe: ") + std::strerror(errno));
-        uint64_t addressSpace = (kWorkerBaseMiB + uint64_t(spec_.limits.memoryMiB)) << 20;
-        for (size_t k : order_) addressSpace += 2 * phases_[k].input.size();
-        pid_t pid = spawnWorker(spec_, requestPipe[0], resultPipe[1], outputPipe[1], addressSpace);
-        close(requestPipe[0]);
-        close(resultPipe[1]);
-        close(outputPipe[1]);
-        pid_ = pid;
-        requestFd_ = requestPipe[1];
-        fcntl(requestFd_, F_SETFL, O_NONBLOCK);
+        StartedWorker::Process process = started ? started->take() : spawnWorker(spec_, phases_, order_);
+        pid_ = process.pid;
+        requestFd_ = process.requestFd;
         queueRequest();
-        converse(resultPipe[0], outputPipe[0]);
+        converse(process.resultFd, process.outputFd);
         if (requestFd_ >= 0) close(requestFd_);
-        close(resultPipe[0]);
-        close(outputPipe[0]);
+        close(process.resultFd);
+        close(process.outputFd);
         judgeEnding(reap());
     }
 
@@ -126,20 +147,29 @@ private:
     void queueRequest() {
         size_t step = conversation_->step();
         if (step >= order_.size()) {
-            put<uint32_t>(worker::kEndOfRequest);
+            request_.put<uint32_t>(worker::kEndOfRequest);
             deadline_ = Clock::now() + seconds(kEndSeconds);
             cpuAtPhase_.reset();  // the end has a wall-clock deadline only
             return;
         }
         const ChildPhase& phase = phases_[order_[step]];
-        put<uint32_t>(static_cast<uint32_t>(order_[step]));
-        put<uint32_t>(static_cast<uint32_t>(phase.task.size()));
-        pendingRequest_.insert(pendingRequest_.end(), phase.task.begin(), phase.task.end());
-        put<uint64_t>(phase.input.size());
-        pendingRequest_.insert(pendingRequest_.end(), phase.input.begin(), phase.input.end());
+        request_.put<uint32_t>(static_cast<uint32_t>(order_[step]));
+        request_.put<uint32_t>(static_cast<uint32_t>(phase.task.size()));
+        request_.own({reinterpret_cast<const uint8_t*>(phase.task.data()), phase.task.size()});
+        request_.put<uint64_t>(phase.input.size());
+        request_.view(phase.input);
         phaseRequestedAt_ = Clock::now();
-        deadline_ = phaseRequestedAt_ + seconds(spec_.limits.wallSeconds);
-        cpuAtPhase_ = processCpuSeconds(pid_);
+        // The set-up's CPU time counts from the worker's start: a worker started ahead
+        // (StartedWorker) may have run code before this request, and that code is the set-up's,
+        // so its first deadline comes as much earlier as the CPU time it has already used.
+        double usedAhead = 0.0;
+        if (step == 0) {
+            usedAhead = processCpuSeconds(pid_).value_or(0.0);
+            cpuAtPhase_ = 0.0;
+        } else {
+            cpuAtPhase_ = processCpuSeconds(pid_);
+        }
+        deadline_ = phaseRequestedAt_ + seconds(std::max(0.0, spec_.limits.wallSeconds - usedAhead));
     }
 
     // Called at the deadline. The phase's limit is CPU time: on a loaded machine the worker
@@ -158,12 +188,6 @@ private:
         return false;
     }
 
-    template <typename T>
-    void put(T value) {
-        const auto* p = reinterpret_cast<const uint8_t*>(&value);
-        pendingRequest_.insert(pendingRequest_.end(), p, p + sizeof value);
-    }
-
     void converse(int resultFd, int outputFd) {
         bool open[2] = {true, true};
         std::vector<uint8_t> buffer(1 << 16);
@@ -176,7 +200,7 @@ private:
             }
             pollfd fds[3] = {{open[0] ? resultFd : -1, POLLIN, 0},
                              {open[1] ? outputFd : -1, POLLIN, 0},
-                             {!pendingRequest_.empty() ? requestFd_ : -1, POLLOUT, 0}};
+                             {!request_.empty() ? requestFd_ : -1, POLLOUT, 0}};
             int ready = poll(fds, 3, static_cast<int>(std::min<long long>(left, 1000)));
             if (ready < 0 && errno != EINTR) throw Error(std::string("grader: poll failed: ") + std::strerror(errno));
             if (ready <= 0) continue;
@@ -205,12 +229,9 @@ private:
     }
 
     void writeRequest() {
-        ssize_t n = write(requestFd_, pendingRequest_.data(), pendingRequest_.size());
-        if (n > 0) pendingRequest_.erase(pendingRequest_.begin(), pendingRequest_.begin() + n);
-        else if (n < 0 && errno != EAGAIN && errno != EINTR) {  // the worker closed its input
+        if (!request_.writeTo(requestFd_)) {  // the worker closed its input
             close(requestFd_);
             requestFd_ = -1;
-            pendingRequest_.clear();
         }
     }
 
@@ -334,7 +355,7 @@ private:
     std::vector<bool> reported_;
     std::vector<size_t> order_;
     std::optional<WorkerConversation> conversation_;
-    std::vector<uint8_t> pendingRequest_;
+    RequestQueue request_;
     pid_t pid_ = -1;
     int requestFd_ = -1;
     Clock::time_point phaseRequestedAt_, deadline_;
@@ -349,7 +370,31 @@ bool TimeoutStrikes::exhausted(const std::string& stub) const {
     return it != counts_.end() && it->second >= kLimit;
 }
 
-SandboxRun runSandboxed(const WorkerSpec& worker, std::span<const ChildPhase> phases, TimeoutStrikes* strikes) {
+StartedWorker::StartedWorker(const WorkerSpec& worker, std::span<const ChildPhase> phases)
+    : process_(spawnWorker(worker, phases, allPhases(phases.size()))) {}
+
+StartedWorker::StartedWorker(StartedWorker&& other) noexcept : process_(other.take()) {}
+
+StartedWorker& StartedWorker::operator=(StartedWorker&& other) noexcept {
+    if (this != &other) {
+        stop();
+        process_ = other.take();
+    }
+    return *this;
+}
+
+void StartedWorker::stop() {
+    if (process_.pid < 0) return;
+    kill(process_.pid, SIGKILL);
+    waitpid(process_.pid, nullptr, 0);
+    for (int fd : {process_.requestFd, process_.resultFd, process_.outputFd}) close(fd);
+    process_ = Process{};
+}
+
+StartedWorker::Process StartedWorker::take() { return std::exchange(process_, Process{}); }
+
+SandboxRun runSandboxed(const WorkerSpec& worker, std::span<const ChildPhase> phases, TimeoutStrikes* strikes,
+                        std::optional<StartedWorker> started) {
     const SandboxLimits& limits = worker.limits;
     // A worker that ends while the grader still writes its request must not end the grader.
     std::signal(SIGPIPE, SIG_IGN);
@@ -368,12 +413,14 @@ SandboxRun runSandboxed(const WorkerSpec& worker, std::span<const ChildPhase> ph
         for (size_t k = 1; k < phases.size(); ++k) run.phases[k] = run.phases[0];
         return run;
     }
+    // A worker started for every phase allows inputs that will not be sent: start one that doesn't.
+    if (std::find(skipped.begin(), skipped.end(), true) != skipped.end()) started.reset();
     while (true) {
         std::vector<size_t> order = {0};
         for (size_t k = 1; k < phases.size(); ++k)
             if (!have[k]) order.push_back(k);
         WorkerSession session(worker, phases, run);
-        session.execute(order);
+        session.execute(order, std::exchange(started, std::nullopt));
         for (size_t k = 0; k < phases.size(); ++k)
             if (session.reported()[k] && !have[k]) {
                 run.phases[k] = session.outcomes()[k];

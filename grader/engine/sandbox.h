@@ -11,9 +11,12 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
+
+#include <sys/types.h>
 
 namespace rtlab::grader {
 
@@ -76,10 +79,36 @@ private:
     std::map<std::string, int> counts_;
 };
 
+// A worker started before its phases are requested: sandboxed, it waits for its first request.
+// The grading session starts the next group's worker while the current group runs, so that a
+// group pays no start-up before its first verdict. The set-up phase's CPU time (and its CPU
+// limit) still counts from the worker's start, so work done while waiting is the set-up's;
+// only its wall clock starts at the request. Dropped unused, the worker is killed.
+class StartedWorker {
+public:
+    StartedWorker(const WorkerSpec& worker, std::span<const ChildPhase> phases);
+    StartedWorker(StartedWorker&& other) noexcept;
+    StartedWorker& operator=(StartedWorker&& other) noexcept;
+    ~StartedWorker() { stop(); }
+
+    struct Process {
+        pid_t pid = -1;
+        int requestFd = -1, resultFd = -1, outputFd = -1;  // the grader's ends of the worker's pipes
+    };
+    // Hands the process over; the caller closes the descriptors and reaps it.
+    Process take();
+
+private:
+    void stop();  // kills and reaps a worker not handed over
+    Process process_;
+};
+
 // Runs every phase. When a child dies in phase k > 0, a new child runs the set-up again and
 // continues with phase k + 1, so one crash costs only the tests that depend on that phase.
 // Phases whose stub has exhausted its strikes are reported as timed out without running.
-SandboxRun runSandboxed(const WorkerSpec& worker, std::span<const ChildPhase> phases, TimeoutStrikes* strikes = nullptr);
+// `started`, when given, is a worker started for these phases; it runs the first session.
+SandboxRun runSandboxed(const WorkerSpec& worker, std::span<const ChildPhase> phases, TimeoutStrikes* strikes = nullptr,
+                        std::optional<StartedWorker> started = std::nullopt);
 
 // What the worker's isolation consists of on this machine, for the reports.
 std::string workerIsolation();
