@@ -9,7 +9,9 @@
 #include "grader/engine/grades_csv.h"
 #include "grader/engine/grading_session.h"
 #include "grader/engine/grading_rubric.h"
+#include "grader/engine/pristine_stubs.h"
 #include "grader/engine/submission_grading.h"
+#include "grader/engine/worker_sources.h"
 #include "viewer/report_viewers.h"
 
 #include <chrono>
@@ -166,6 +168,13 @@ void grade(GradeFlags& flags) {
     if (g.workerPath.empty()) g.workerPath = (executableDir() / "rtlab-worker").string();
     if (!fs::is_regular_file(g.workerPath)) throw Error("--worker " + g.workerPath + ": no such worker executable (make build builds it)");
     g.implementation = flags.label.empty() ? g.workerPath + " (the implementation it links)" : flags.label;
+    // A test whose stub the worker holds as committed is reported not started without running
+    // (worker_sources.h). Without git's HEAD to compare with, every test runs: slower, same verdicts.
+    try {
+        if (!g.runEveryPhase) g.unstartedStubs = grader::unstartedStubs(grader::committedStubs(g.sourceDir), g.workerPath);
+    } catch (const Error&) {
+        g.unstartedStubs.clear();
+    }
     grader::GradingReport report = grader::gradeWorker(g);
     writeReports(report, flags);
     checkFailUnder(report, flags.failUnder);
@@ -226,6 +235,9 @@ void addGradeCommand(CLI::App& app) {
                     "rtlab grade and rtlab-solution grade name theirs)");
     cmd->add_flag("--write-reference", flags->grading.writeReference,
                   "Record SAH costs and work per ray into grader/reference/ (run with rtlab-solution)");
+    cmd->add_flag("--run-every-phase", flags->grading.runEveryPhase,
+                  "Run the tests of stubs the code holds exactly as committed too, instead of reporting them "
+                  "not started without running (the same verdicts, slower)");
     cmd->add_flag("--quiet", flags->quiet, "No table and no progress on the terminal");
     cmd->add_flag("--verbose", flags->verbose,
                   "Under each test that is not passing, every failing case: the box or triangle, the ray, "

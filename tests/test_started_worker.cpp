@@ -25,7 +25,7 @@ std::vector<ChildPhase> boxPhases() {
     }
     ByteWriter input;
     input.putVector(queries);
-    return {ChildPhase{"set-up", worker::kTaskNone, {}}, ChildPhase{"a0 intersectBox", worker::kTaskBox, input.bytes()}};
+    return {ChildPhase{"set-up", worker::kTaskNone, {}, {}}, ChildPhase{"a0 intersectBox", worker::kTaskBox, input.bytes(), "a0 intersectBox"}};
 }
 
 bool noChildLeft() {

@@ -88,7 +88,7 @@ StructurePlugin bvhPlugin(const BvhConfig& config) {
         ByteWriter input;
         writeScene(scene, input);
         input.put(config.options);
-        return makePhase(config.buildStub, worker::kTaskBvhBuild, std::move(input));
+        return makePhase(config.buildStub, worker::kTaskBvhBuild, std::move(input), a1Stubs().name("buildBvh"));
     };
     plugin.queryTask = worker::kTaskBvhQuery;
     plugin.queries.push_back({"closest-hits", worker::QueryKind::Closest, kStubOrdered});

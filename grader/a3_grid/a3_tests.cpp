@@ -25,7 +25,8 @@ constexpr const char* kA3 = "a3";
 const std::string kStubResolution = a3Stubs().name("gridResolution");
 const std::string kStubCell = a3Stubs().name("cellOfPoint");
 const std::string kStubRange = a3Stubs().name("cellRange");
-const std::string kStubFill = a3Stubs().name("fillGridCells");
+// The build's frame calls gridResolution before fillGridCells fills the cells.
+const std::string kStubFill = a3Stubs().names({"gridResolution", "fillGridCells"});
 const std::string kStubSetup = a3Stubs().name("ddaSetup");
 const std::string kStubStep = a3Stubs().name("ddaStep");
 const std::string kStubWalk = a3Stubs().names({"ddaSetup", "ddaStep"});
@@ -331,7 +332,7 @@ TestGroup cellOrderGroup(uint64_t seed) {
         ByteWriter input;
         input.put(frames[f]);
         input.putVector(calls);
-        group.phases.push_back(makePhase(kStubWalk, worker::kTaskDdaWalk, std::move(input)));
+        group.phases.push_back(makePhase(kStubWalk, worker::kTaskDdaWalk, std::move(input), kStubSetup));
     }
     group.score = [expected, frames](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult result = makeResult(kA3, "a3/dda/cell-order");
@@ -486,7 +487,7 @@ StructurePlugin gridPlugin() {
         ByteWriter input;
         writeScene(scene, input);
         input.put(options);
-        return makePhase(kStubFill, worker::kTaskGridBuild, std::move(input));
+        return makePhase(kStubFill, worker::kTaskGridBuild, std::move(input), a3Stubs().name("gridResolution"));
     };
     plugin.queryTask = worker::kTaskGridQuery;
     plugin.queries = {{"closest-hits", worker::QueryKind::Closest, kStubClosest}, {"any-hits", worker::QueryKind::Occluded, kStubOccluded}};
@@ -528,7 +529,7 @@ std::vector<TestGroup> a3Groups(GradingContext& context) {
     // The stadium: graded for its hits, never for speed (a uniform grid is slow there by design).
     groups.push_back(structureSceneGroup(grid, prepareScene(teapotInAStadium(context.modelsDir), context.seed), context));
     // Every scene rendered through the structure.
-    for (TestGroup& g : imageGroups(context, {"a3", "grid", "the renderer with --accel grid (a0 + a3 functions)"}))
+    for (TestGroup& g : imageGroups(context, {"a3", "grid", "the renderer with --accel grid (a0 + a3 functions)", a3Stubs().name("gridResolution")}))
         groups.push_back(std::move(g));
     return groups;
 }

@@ -34,7 +34,8 @@ const std::string kStubDecide = a5Stubs().name("kdDecideNode");
 const std::string kStubChildOrder = a5Stubs().name("kdChildOrder");
 const std::string kStubClosest = a5Stubs().name("intersectKdTree");
 const std::string kStubOccluded = a5Stubs().name("occludedKdTree");
-const std::string kStubBuild = a5Stubs().name("buildKdTree") + " with the a5 functions it calls";
+const std::string kEntryBuild = a5Stubs().name("buildKdTree");
+const std::string kStubBuild = kEntryBuild + " with the a5 functions it calls";
 const std::string kStubBuildNlogN = a5Stubs().name("buildKdTreeNlogN");
 const std::string kStubBsp = a5Stubs().name("buildBspAutopartition");
 const std::string kStubBspClosest = a5Stubs().name("intersectBsp");
@@ -326,17 +327,19 @@ std::optional<KdTree> readTree(const PhaseOutcome& outcome, size_t primCount, st
 
 // A build phase: the scene, then what writeOptions adds.
 template <typename WriteOptions>
-std::function<ChildPhase(const Scene&)> buildPhase(const std::string& stub, const char* task, WriteOptions writeOptions) {
+std::function<ChildPhase(const Scene&)> buildPhase(const std::string& stub, const std::string& entry, const char* task,
+                                                   WriteOptions writeOptions) {
     return [=](const Scene& scene) {
         ByteWriter input;
         writeScene(scene, input);
         writeOptions(input);
-        return makePhase(stub, task, std::move(input));
+        return makePhase(stub, task, std::move(input), entry);
     };
 }
 
-// The KD-tree as the generic structure tests see it, with pbrt-v3's defaults.
-StructurePlugin kdPlugin(const std::string& label, worker::KdBuildFunction function, const std::string& stub) {
+// The KD-tree as the generic structure tests see it, with pbrt-v3's defaults. The build calls
+// `entry` first.
+StructurePlugin kdPlugin(const std::string& label, worker::KdBuildFunction function, const std::string& stub, const std::string& entry) {
     const KdTreeOptions options;
     StructurePlugin plugin;
     plugin.assignment = kA5;
@@ -344,7 +347,7 @@ StructurePlugin kdPlugin(const std::string& label, worker::KdBuildFunction funct
     plugin.drawing = "kdtree";
     plugin.draw = drawPlanes;
     plugin.traceAccelerator = function == worker::KdBuildFunction::NlogN ? "kdtree:build=nlogn" : "kdtree:build=sort";
-    plugin.build = buildPhase(stub, worker::kTaskKdBuild, [options, function](ByteWriter& input) {
+    plugin.build = buildPhase(stub, entry, worker::kTaskKdBuild, [options, function](ByteWriter& input) {
         input.put(options);
         input.put<uint8_t>(static_cast<uint8_t>(function));
     });
@@ -383,7 +386,7 @@ StructurePlugin bspPlugin() {
     plugin.assignment = kA5;
     plugin.label = "bsp";
     plugin.traceAccelerator = "bsp";
-    plugin.build = buildPhase(kStubBsp, worker::kTaskBspBuild, [options](ByteWriter& input) { input.put(options); });
+    plugin.build = buildPhase(kStubBsp, kStubBsp, worker::kTaskBspBuild, [options](ByteWriter& input) { input.put(options); });
     plugin.queryTask = worker::kTaskBspQuery;
     plugin.queries = {{"closest-hits", worker::QueryKind::Closest, kStubBspClosest}, {"any-hits", worker::QueryKind::Occluded, kStubBspOccluded}};
     // Judged by its hits only: the structure test says what was built.
@@ -412,7 +415,7 @@ std::vector<TestGroup> a5Groups(GradingContext& context) {
     groups.push_back(leafGroup());
     groups.push_back(childOrderGroup());
     groups.push_back(walkGroup());
-    StructurePlugin kdtree = kdPlugin("kdtree", worker::KdBuildFunction::Sort, kStubBuild);
+    StructurePlugin kdtree = kdPlugin("kdtree", worker::KdBuildFunction::Sort, kStubBuild, kEntryBuild);
     kdtree.cost = CostTest{"sah-cost", "SAH cost", 1e-12, "within 1e-12 relative"};
     for (TestGroup& g : structureGroups(kdtree, context)) groups.push_back(std::move(g));
     // The stadium: the depth limit of pbrt's rule against a small model in a large box.
@@ -420,7 +423,7 @@ std::vector<TestGroup> a5Groups(GradingContext& context) {
     groups.push_back(structureSceneGroup(kdtree, stadium, context));
     // Beyond the lecture, worth no points: the O(N log N) build must give the same trees, and the
     // BSP autopartition the right hits.
-    StructurePlugin nlogn = kdPlugin("nlogn", worker::KdBuildFunction::NlogN, kStubBuildNlogN);
+    StructurePlugin nlogn = kdPlugin("nlogn", worker::KdBuildFunction::NlogN, kStubBuildNlogN, kStubBuildNlogN);
     StructurePlugin bsp = bspPlugin();
     for (const auto& scene : hitSetScenes(context).list) {
         groups.push_back(structureSceneGroup(nlogn, scene, context));
@@ -430,7 +433,7 @@ std::vector<TestGroup> a5Groups(GradingContext& context) {
         groups.push_back(structureSceneGroup(bsp, timed ? prepareScene(scene->test, context.seed) : scene, context));
     }
     // Every scene rendered through the structure.
-    for (TestGroup& g : imageGroups(context, {"a5", "kdtree:build=sort", "the renderer with --accel kdtree:build=sort (a0 + a5 functions)"}))
+    for (TestGroup& g : imageGroups(context, {"a5", "kdtree:build=sort", "the renderer with --accel kdtree:build=sort (a0 + a5 functions)", kEntryBuild}))
         groups.push_back(std::move(g));
     return groups;
 }

@@ -150,14 +150,15 @@ GradingReport gradeWorker(const GradingOptions& options, std::vector<TestResult>
     report.seed = options.seed;
     report.isolation = workerIsolation();
     WorkerSpec worker{options.workerPath, options.limits};
-    TimeoutStrikes strikes;
+    StubVerdicts known(options.unstartedStubs);
     bool terminal = options.progress && isatty(STDERR_FILENO);
     std::set<std::string> notStarted;
     // While a group runs, the next one's worker starts (sandbox.h, StartedWorker).
-    auto startAhead = [&](size_t i) {
-        bool runs = i < groups.size() && options.unavailableWorker.empty() && !groups[i].phases.empty() &&
-                    !allNotStarted(defined[i], notStarted);
-        return runs ? std::optional<StartedWorker>(std::in_place, worker, groups[i].phases) : std::nullopt;
+    auto startAhead = [&](size_t i) -> std::optional<StartedWorker> {
+        if (i >= groups.size() || !options.unavailableWorker.empty() || allNotStarted(defined[i], notStarted)) return std::nullopt;
+        std::vector<size_t> order = phasesToRun(groups[i].phases, &known, worker.limits);
+        if (order.empty()) return std::nullopt;
+        return std::optional<StartedWorker>(std::in_place, worker, groups[i].phases, std::move(order));
     };
     std::optional<StartedWorker> next = startAhead(0);
     for (size_t i = 0; i < groups.size(); ++i) {
@@ -168,7 +169,7 @@ GradingReport gradeWorker(const GradingOptions& options, std::vector<TestResult>
         next = startAhead(i + 1);
         SandboxRun run;
         if (!options.unavailableWorker.empty()) run = unavailableWorkerRun(group.phases.size(), options.unavailableWorker);
-        else if (!group.phases.empty()) run = runSandboxed(worker, group.phases, &strikes, std::move(current));
+        else if (!group.phases.empty()) run = runSandboxed(worker, group.phases, &known, std::move(current));
         size_t first = report.tests.size();
         scoreDefinedTests(group, run, defined[i], report.tests);
         for (size_t k = first; k < report.tests.size(); ++k)

@@ -8,6 +8,7 @@
 #include "grader/engine/submission_build.h"
 #include "grader/engine/test_group.h"
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,10 @@ struct GradingOptions {
     std::string workerPath;  // the worker executable holding the code to grade (grader/worker/)
     std::string unavailableWorker;  // when set, no worker runs and every phase fails with this reason
     SandboxLimits limits;
+    // The stubs (StubTable::name) whose file the worker holds exactly as committed
+    // (worker_sources.h): their phases are reported not started without running.
+    std::set<std::string> unstartedStubs;
+    bool runEveryPhase = false;  // a submission's unstartedStubs stay empty: every phase runs
     CompileLimits compile;   // for a submission's build
     bool writeReference = false;  // record SAH costs and work per ray into grader/reference/
     bool progress = true;         // progress lines on stderr when it is a terminal

@@ -11,6 +11,10 @@
 
 namespace rtlab::grader {
 
+// The stubs at git's HEAD: repository path -> contents; empty outside a git checkout, where
+// no commit tells a stub from a student's file.
+std::map<std::string, std::string> committedStubs(const std::string& sourceDir);
+
 // Repository path ("assignments/a0_intersect/ray_box.cpp") -> contents. Throws rtlab::Error
 // when the stubs cannot be read, or when one of `folders` (of assignments/) has none: an
 // assignment added to the tree but not yet committed.

@@ -5,6 +5,7 @@
 #include "grader/engine/sandbox_start.h"
 #include "grader/engine/system_call_filter.h"
 #include "grader/engine/worker_conversation.h"
+#include "grader/wire/task_inputs.h"
 #include "grader/wire/worker_protocol.h"
 
 #include <algorithm>
@@ -365,19 +366,37 @@ private:
 
 }  // namespace
 
-bool TimeoutStrikes::exhausted(const std::string& stub) const {
-    auto it = counts_.find(stub);
-    return it != counts_.end() && it->second >= kLimit;
+std::optional<PhaseOutcome> StubVerdicts::verdict(const ChildPhase& phase, const SandboxLimits& limits) const {
+    if (unstarted_.count(phase.entry)) return PhaseOutcome{PhaseStatus::NotStarted, {}, "not started: " + phase.entry + " throws NotImplemented", 0.0, 0.0};
+    auto it = timeouts_.find(phase.stub);
+    if (it != timeouts_.end() && it->second >= kStrikes)
+        return PhaseOutcome{PhaseStatus::TimedOut, {},
+                            "not run: " + phase.stub + " already timed out " + std::to_string(kStrikes) + " times (limit " +
+                                formatSeconds(limits.wallSeconds) + " s per test)",
+                            0.0, 0.0};
+    return std::nullopt;
 }
 
-StartedWorker::StartedWorker(const WorkerSpec& worker, std::span<const ChildPhase> phases)
-    : process_(spawnWorker(worker, phases, allPhases(phases.size()))) {}
+std::vector<size_t> phasesToRun(std::span<const ChildPhase> phases, const StubVerdicts* known, const SandboxLimits& limits) {
+    if (phases.empty()) return {};
+    std::optional<PhaseOutcome> setup = known ? known->verdict(phases[0], limits) : std::nullopt;
+    if (setup && setup->status != PhaseStatus::NotStarted) return {};
+    std::vector<size_t> order = {0};
+    for (size_t k = 1; k < phases.size(); ++k)
+        if (!known || !known->verdict(phases[k], limits)) order.push_back(k);
+    if (order.size() == 1 && (setup || phases[0].task == worker::kTaskNone)) return {};
+    return order;
+}
 
-StartedWorker::StartedWorker(StartedWorker&& other) noexcept : process_(other.take()) {}
+StartedWorker::StartedWorker(const WorkerSpec& worker, std::span<const ChildPhase> phases, std::vector<size_t> order)
+    : order_(order.empty() ? allPhases(phases.size()) : std::move(order)), process_(spawnWorker(worker, phases, order_)) {}
+
+StartedWorker::StartedWorker(StartedWorker&& other) noexcept : order_(std::move(other.order_)), process_(other.take()) {}
 
 StartedWorker& StartedWorker::operator=(StartedWorker&& other) noexcept {
     if (this != &other) {
         stop();
+        order_ = std::move(other.order_);
         process_ = other.take();
     }
     return *this;
@@ -393,32 +412,34 @@ void StartedWorker::stop() {
 
 StartedWorker::Process StartedWorker::take() { return std::exchange(process_, Process{}); }
 
-SandboxRun runSandboxed(const WorkerSpec& worker, std::span<const ChildPhase> phases, TimeoutStrikes* strikes,
+SandboxRun runSandboxed(const WorkerSpec& worker, std::span<const ChildPhase> phases, StubVerdicts* known,
                         std::optional<StartedWorker> started) {
-    const SandboxLimits& limits = worker.limits;
     // A worker that ends while the grader still writes its request must not end the grader.
     std::signal(SIGPIPE, SIG_IGN);
     SandboxRun run;
     run.phases.resize(phases.size());
-    std::vector<bool> have(phases.size(), false), skipped(phases.size(), false);
-    for (size_t k = 0; k < phases.size() && strikes; ++k)
-        if (strikes->exhausted(phases[k].stub)) {
-            skipped[k] = have[k] = true;
-            run.phases[k] = PhaseOutcome{PhaseStatus::TimedOut, {},
-                                         "not run: " + phases[k].stub + " already timed out " + std::to_string(TimeoutStrikes::kLimit) +
-                                             " times (limit " + formatSeconds(limits.wallSeconds) + " s per test)",
-                                         0.0, 0.0};
+    std::vector<bool> have(phases.size(), false), decided(phases.size(), false);
+    for (size_t k = 0; k < phases.size() && known; ++k)
+        if (auto verdict = known->verdict(phases[k], worker.limits)) {
+            decided[k] = have[k] = true;
+            run.phases[k] = std::move(*verdict);
         }
-    if (skipped[0]) {
-        for (size_t k = 1; k < phases.size(); ++k) run.phases[k] = run.phases[0];
+    std::vector<size_t> order = phasesToRun(phases, known, worker.limits);
+    if (order.empty()) {
+        // A set-up out of strikes: every phase shares its verdict. A set-up not started, as a
+        // worker would: every later phase gives its own. An empty set-up completes with nothing.
+        bool shareSetup = decided[0] && run.phases[0].status != PhaseStatus::NotStarted;
+        for (size_t k = 1; k < phases.size() && shareSetup; ++k) run.phases[k] = run.phases[0];
+        if (!decided[0]) run.phases[0] = PhaseOutcome{PhaseStatus::Completed, {}, {}, 0.0, 0.0};
         return run;
     }
-    // A worker started for every phase allows inputs that will not be sent: start one that doesn't.
-    if (std::find(skipped.begin(), skipped.end(), true) != skipped.end()) started.reset();
+    // A set-up not started runs anyway when later phases do: a worker goes on after it, and
+    // gives their verdicts.
+    if (decided[0]) have[0] = decided[0] = false;
+    // A worker started for other phases allows inputs that will not be sent, or lacks room
+    // for some that will: start one for these.
+    if (started && started->order() != order) started.reset();
     while (true) {
-        std::vector<size_t> order = {0};
-        for (size_t k = 1; k < phases.size(); ++k)
-            if (!have[k]) order.push_back(k);
         WorkerSession session(worker, phases, run);
         session.execute(order, std::exchange(started, std::nullopt));
         for (size_t k = 0; k < phases.size(); ++k)
@@ -439,6 +460,9 @@ SandboxRun runSandboxed(const WorkerSpec& worker, std::span<const ChildPhase> ph
         // A worker that ended early costs only its current phase: the next one repeats the
         // set-up and goes on with the first phase without a verdict.
         if (session.finished() || std::find(have.begin() + 1, have.end(), false) == have.end()) break;
+        order = {0};
+        for (size_t k = 1; k < phases.size(); ++k)
+            if (!have[k]) order.push_back(k);
         // A worker that gave no new verdict at all cannot make progress: stop rather than loop.
         bool progressed = false;
         for (size_t k = 1; k < phases.size(); ++k) progressed |= session.reported()[k];
@@ -455,7 +479,7 @@ SandboxRun runSandboxed(const WorkerSpec& worker, std::span<const ChildPhase> ph
         if (!have[k]) run.phases[k] = PhaseOutcome{PhaseStatus::NoResults, {}, "the worker ended without results in " + phases[k].stub, 0.0, 0.0};
         // A phase that inherited the set-up's timeout did not time out itself.
         bool ownVerdict = k == 0 || run.phases[0].status == PhaseStatus::Completed;
-        if (strikes && ownVerdict && !skipped[k] && run.phases[k].status == PhaseStatus::TimedOut) strikes->record(phases[k].stub);
+        if (known && ownVerdict && !decided[k] && run.phases[k].status == PhaseStatus::TimedOut) known->recordTimeout(phases[k].stub);
     }
     return run;
 }

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <set>
 #include <span>
 #include <string>
 #include <vector>
@@ -41,6 +42,11 @@ struct ChildPhase {
     std::string stub;  // e.g. "a1 buildBvh (assignments/a1_bvh/bvh_build.cpp)"
     std::string task;
     std::vector<uint8_t> input;
+    // The stub the task calls first on every input, as it names itself in NotImplemented: stub
+    // itself when that names one function, one of them when it names several, empty when the
+    // task may end without calling any (a query with no rays to ask). A committed entry decides
+    // the phase's verdict without running it (StubVerdicts).
+    std::string entry;
 };
 
 enum class PhaseStatus {
@@ -67,17 +73,29 @@ struct SandboxRun {
     std::string output;  // raw bytes the student code printed (first few KiB); escape before showing
 };
 
-// Counts wall-clock timeouts per stub across a grading run, so a stub that hangs on every
-// input costs its time limit twice, not once per test.
-class TimeoutStrikes {
+// What a grading run knows of a phase's stub before it runs, given as the phase's verdict
+// without running it:
+//  - a stub the worker holds exactly as committed (worker_sources.h) is not started: every
+//    committed stub throws NotImplemented on entry, whatever its input;
+//  - a stub that timed out kStrikes times is reported timed out, so a stub that hangs on every
+//    input costs its time limit twice, not once per test.
+class StubVerdicts {
 public:
-    static constexpr int kLimit = 2;
-    bool exhausted(const std::string& stub) const;
-    void record(const std::string& stub) { ++counts_[stub]; }
+    static constexpr int kStrikes = 2;
+    // unstarted: the stubs (StubTable::name) whose file the worker holds as committed.
+    explicit StubVerdicts(std::set<std::string> unstarted = {}) : unstarted_(std::move(unstarted)) {}
+    std::optional<PhaseOutcome> verdict(const ChildPhase& phase, const SandboxLimits& limits) const;
+    void recordTimeout(const std::string& stub) { ++timeouts_[stub]; }
 
 private:
-    std::map<std::string, int> counts_;
+    std::set<std::string> unstarted_;
+    std::map<std::string, int> timeouts_;
 };
+
+// The phases a worker has to run: phase 0 and every later phase without a verdict from
+// `known`. None when phase 0 has a verdict (every phase shares it), or when phase 0 is the
+// empty set-up (noSetUp, test_group.h) and every later phase has one.
+std::vector<size_t> phasesToRun(std::span<const ChildPhase> phases, const StubVerdicts* known, const SandboxLimits& limits);
 
 // A worker started before its phases are requested: sandboxed, it waits for its first request.
 // The grading session starts the next group's worker while the current group runs, so that a
@@ -86,7 +104,9 @@ private:
 // only its wall clock starts at the request. Dropped unused, the worker is killed.
 class StartedWorker {
 public:
-    StartedWorker(const WorkerSpec& worker, std::span<const ChildPhase> phases);
+    // Started for `order` (phasesToRun), whose inputs its address space allows; for every phase
+    // when none is given.
+    StartedWorker(const WorkerSpec& worker, std::span<const ChildPhase> phases, std::vector<size_t> order = {});
     StartedWorker(StartedWorker&& other) noexcept;
     StartedWorker& operator=(StartedWorker&& other) noexcept;
     ~StartedWorker() { stop(); }
@@ -97,17 +117,20 @@ public:
     };
     // Hands the process over; the caller closes the descriptors and reaps it.
     Process take();
+    const std::vector<size_t>& order() const { return order_; }
 
 private:
     void stop();  // kills and reaps a worker not handed over
+    std::vector<size_t> order_;
     Process process_;
 };
 
 // Runs every phase. When a child dies in phase k > 0, a new child runs the set-up again and
 // continues with phase k + 1, so one crash costs only the tests that depend on that phase.
-// Phases whose stub has exhausted its strikes are reported as timed out without running.
-// `started`, when given, is a worker started for these phases; it runs the first session.
-SandboxRun runSandboxed(const WorkerSpec& worker, std::span<const ChildPhase> phases, TimeoutStrikes* strikes = nullptr,
+// Phases `known` has a verdict for are not run, and a phase that times out is recorded in it.
+// `started`, when given, is a worker started for these phases; it runs the first session if
+// it was started for the phases that run.
+SandboxRun runSandboxed(const WorkerSpec& worker, std::span<const ChildPhase> phases, StubVerdicts* known = nullptr,
                         std::optional<StartedWorker> started = std::nullopt);
 
 // What the worker's isolation consists of on this machine, for the reports.

@@ -5,6 +5,7 @@
 #include "grader/engine/stub_object_cache.h"
 #include "grader/engine/submission_files.h"
 #include "grader/engine/worker_compile.h"
+#include "grader/engine/worker_sources.h"
 
 #include <nlohmann/json.hpp>
 
@@ -160,6 +161,8 @@ SubmissionBuild buildSubmission(const std::string& submissionDir, const std::str
     else if (!compile.succeeded && build.log.empty()) build.log = "the compiler failed: " + compile.failure + "\n";
     build.executable = (fs::path(host.output) / "rtlab-worker").string();
     build.succeeded = compile.succeeded;
+    // Written by the grader after the compile, over anything the compile left there.
+    if (build.succeeded) writeWorkerSources((fs::path(host.sources) / "assignments").string(), build.executable);
     return build;
 }
 

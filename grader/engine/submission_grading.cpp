@@ -4,6 +4,7 @@
 #include "grader/engine/assignment_registry.h"
 #include "grader/engine/compile_sandbox.h"
 #include "grader/engine/pristine_stubs.h"
+#include "grader/engine/worker_sources.h"
 #include "grader/engine/submission_build.h"
 
 #include <algorithm>
@@ -59,8 +60,7 @@ GradingReport gradeSubmission(const std::string& submissionDir, const Submission
     SubmissionBuild build;
     std::string unreadable;
     try {
-        build = buildSubmission(submissionDir, g.sourceDir, std::move(stubs), options.toolchainPath, options.workDir + "/build", g.compile,
-                                folders);
+        build = buildSubmission(submissionDir, g.sourceDir, stubs, options.toolchainPath, options.workDir + "/build", g.compile, folders);
     } catch (const Error& e) {
         unreadable = e.what();
     }
@@ -69,6 +69,7 @@ GradingReport gradeSubmission(const std::string& submissionDir, const Submission
         buildTest.reason = "the submission cannot be read: " + unreadable;
     } else if (build.succeeded) {
         g.workerPath = build.executable;
+        if (!g.runEveryPhase) g.unstartedStubs = unstartedStubs(stubs, build.executable);
         buildTest.status = TestStatus::Passed;
         buildTest.fraction = 1.0;
         for (const std::string& file : build.fromSubmission) buildTest.details.push_back("from the submission: " + file);

@@ -5,11 +5,16 @@
 namespace rtlab::grader {
 
 ChildPhase noSetUp() {
-    return ChildPhase{"the grader's set-up", worker::kTaskNone, {}};
+    return ChildPhase{"the grader's set-up", worker::kTaskNone, {}, {}};
 }
 
 ChildPhase makePhase(std::string stub, std::string task, ByteWriter input) {
-    return ChildPhase{std::move(stub), std::move(task), std::move(input.bytes())};
+    std::string entry = stub;
+    return makePhase(std::move(stub), std::move(task), std::move(input), std::move(entry));
+}
+
+ChildPhase makePhase(std::string stub, std::string task, ByteWriter input, std::string entry) {
+    return ChildPhase{std::move(stub), std::move(task), std::move(input.bytes()), std::move(entry)};
 }
 
 bool failedPhaseResult(const PhaseOutcome& outcome, TestResult& result) {

@@ -47,8 +47,12 @@ struct TestGroup {
 
 // A phase 0 for groups whose tests need no shared set-up.
 ChildPhase noSetUp();
-// A phase that runs worker task `task` (grader/wire/task_inputs.h) on `input`.
+// A phase that runs worker task `task` (grader/wire/task_inputs.h) on `input`, calling `stub`
+// (one function, as StubTable::name names it) first.
 ChildPhase makePhase(std::string stub, std::string task, ByteWriter input);
+// The same, for a stub that names more than one function: the task calls `entry` first on
+// every input (ChildPhase::entry); empty when it may call none.
+ChildPhase makePhase(std::string stub, std::string task, ByteWriter input, std::string entry);
 
 // The verdict for a test whose phase did not complete: "not started" for NotImplemented,
 // otherwise failed with the sandbox's one-line reason. Returns false when the phase completed.

@@ -58,7 +58,7 @@ TestGroup renderGroup(const ImageConfig& config, std::shared_ptr<ImageJob> job, 
     ByteWriter input;
     writeScene(job->scene, input);
     input.put(request);
-    group.phases = {noSetUp(), makePhase(config.stub, worker::kTaskRender, std::move(input))};
+    group.phases = {noSetUp(), makePhase(config.stub, worker::kTaskRender, std::move(input), config.entry)};
     group.score = [config, job, workDir](const SandboxRun& run, std::vector<TestResult>& results) {
         TestResult result = makeResult(config.assignment, config.assignment + "/images/" + job->name);
         if (!failedPhaseResult(run.phases[1], result)) {

@@ -14,6 +14,7 @@ struct ImageConfig {
     std::string assignment;   // "a1": tests named a1/images/<scene>
     std::string accelerator;  // the registry name the worker renders with: "bvh-median"
     std::string stub;         // named in verdicts
+    std::string entry;        // the stub the render calls first: the structure's build (ChildPhase::entry)
 };
 
 std::vector<TestGroup> imageGroups(GradingContext& context, const ImageConfig& config);

@@ -22,7 +22,8 @@ ChildPhase queryPhase(const QueryTest& query, const std::string& task, const std
     input.bytes() = structure;
     input.put<uint8_t>(static_cast<uint8_t>(query.kind));
     input.putVector(rays);
-    return makePhase(query.stub, task, std::move(input));
+    // With no rays to ask, the task calls no stub.
+    return makePhase(query.stub, task, std::move(input), rays.empty() ? "" : query.stub);
 }
 
 ChildPhase queryPhase(const StructurePlugin& plugin, const QueryTest& query, const std::vector<Ray>& rays) {
