@@ -11,6 +11,7 @@
 #include "framework/core/ray_file.h"
 #include "framework/interface/a3_grid.h"
 #include "framework/interface/a6_radiometry.h"
+#include "grader/a6_radiometry/wire/sample_calls.h"
 #include "viewer/radiometry_panels.h"
 #include "viewer/scene_case.h"
 #include "viewer/viewer_folder.h"
@@ -90,30 +91,7 @@ std::vector<GridCell> linkedDdaWalk(const UniformGrid& grid, const Ray& ray, flo
     return cells;
 }
 
-Vec3 linkedSampler(const grader::worker::SamplerCall& c, Vec2 u) {
-    switch (c.sampler) {
-    case Sampler::UniformSphere: return sampleUniformSphere(u).direction;
-    case Sampler::UniformHemisphere: return sampleUniformHemisphere(u).direction;
-    case Sampler::CosineHemisphere: return sampleCosineHemisphere(u).direction;
-    case Sampler::UniformCone: return sampleUniformCone(u, c.cosThetaMax).direction;
-    case Sampler::UniformTriangle: return sampleUniformTriangle(c.p0, c.p1, c.p2, u).point;
-    case Sampler::SphericalTriangle: return sampleSphericalTriangle(c.p, c.p0, c.p1, c.p2, u).direction;
-    }
-    throw Error("an unknown sampler");
-}
-
-Vec3 linkedEstimator(const grader::worker::EstimatorCall& c, Vec2 u, const SceneRays& rays) {
-    switch (c.estimator) {
-    case Estimator::PointLight: return estimatePointLight(c.point, c.pointLight, rays);
-    case Estimator::TriangleByArea: return estimateTriangleLightByArea(c.point, c.triangle, u, rays);
-    case Estimator::TriangleBySolidAngle: return estimateTriangleLightBySolidAngle(c.point, c.triangle, u, rays);
-    case Estimator::SphereByArea: return estimateSphereLightByArea(c.point, c.sphere, u, rays);
-    case Estimator::SphereBySolidAngle: return estimateSphereLightBySolidAngle(c.point, c.sphere, u, rays);
-    case Estimator::UniformHemisphere: return estimateByUniformHemisphere(c.point, u, rays);
-    case Estimator::CosineHemisphere: return estimateByCosineHemisphere(c.point, u, rays);
-    }
-    throw Error("an unknown estimator");
-}
+Vec3 linkedSampler(const grader::worker::SamplerCall& c, Vec2 u) { return grader::worker::sampleOnce(c, u).value; }
 
 void view(const ViewOptions& o) {
     auto start = std::chrono::steady_clock::now();
@@ -135,7 +113,7 @@ void view(const ViewOptions& o) {
         viewer::CaseView page;
         page.title = "a6: samplers and estimators";
         page.samplers = viewer::samplerPanels(linkedSampler);
-        page.estimators = viewer::estimatorCurves(linkedEstimator);
+        page.estimators = viewer::estimatorCurves(grader::worker::estimateSample);
         viewer::writeCaseViewer(o.outputDir, page);
         std::printf("wrote %s/index.html: %zu samplers, %zu estimators\n", o.outputDir.c_str(), page.samplers.size(), page.estimators.size());
         return;

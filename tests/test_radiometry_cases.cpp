@@ -5,7 +5,7 @@
 #include "framework/core/pcg32.h"
 #include "framework/interface/a6_radiometry.h"
 #include "grader/a6_radiometry/radiometry_cases.h"
-#include "grader/a6_radiometry/wire/estimator_call.h"
+#include "grader/a6_radiometry/wire/sample_calls.h"
 #include "grader/kit/statistics.h"
 #include "framework/render/oracle_rays.h"
 

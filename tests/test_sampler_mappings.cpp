@@ -4,6 +4,7 @@
 #include "framework/core/pcg32.h"
 #include "framework/interface/a6_radiometry.h"
 #include "grader/a6_radiometry/sampler_mappings.h"
+#include "grader/a6_radiometry/wire/sample_calls.h"
 
 #include <doctest/doctest.h>
 
@@ -25,17 +26,7 @@ worker::SamplerCall configured(Sampler sampler) {
 }
 
 // What the reference sampler (solutions/a6_radiometry) returns for u.
-DVec3 reference(const worker::SamplerCall& c, Vec2 u) {
-    switch (c.sampler) {
-        case Sampler::UniformSphere: return DVec3(sampleUniformSphere(u).direction);
-        case Sampler::UniformHemisphere: return DVec3(sampleUniformHemisphere(u).direction);
-        case Sampler::CosineHemisphere: return DVec3(sampleCosineHemisphere(u).direction);
-        case Sampler::UniformCone: return DVec3(sampleUniformCone(u, c.cosThetaMax).direction);
-        case Sampler::UniformTriangle: return DVec3(sampleUniformTriangle(c.p0, c.p1, c.p2, u).point);
-        case Sampler::SphericalTriangle: return DVec3(sampleSphericalTriangle(c.p, c.p0, c.p1, c.p2, u).direction);
-    }
-    return DVec3(0.0);
-}
+DVec3 reference(const worker::SamplerCall& c, Vec2 u) { return DVec3(worker::sampleOnce(c, u).value); }
 
 }  // namespace
 

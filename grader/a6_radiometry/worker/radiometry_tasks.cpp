@@ -5,7 +5,7 @@
 // any other assignment's code.
 #include "framework/core/pcg32.h"
 #include "framework/interface/a6_radiometry.h"
-#include "grader/a6_radiometry/wire/estimator_call.h"
+#include "grader/a6_radiometry/wire/sample_calls.h"
 #include "grader/a6_radiometry/wire/radiometry_inputs.h"
 #include "framework/render/oracle_rays.h"
 #include "grader/wire/scene_codec.h"
@@ -57,20 +57,6 @@ std::function<double(double, double)> integrand(Integrand which) {
     throw WireError("an unknown integrand");
 }
 
-SampleResult sample(const SamplerCall& c, Vec2 u) {
-    switch (c.sampler) {
-        case Sampler::UniformSphere: { auto s = sampleUniformSphere(u); return {s.direction, s.pdf}; }
-        case Sampler::UniformHemisphere: { auto s = sampleUniformHemisphere(u); return {s.direction, s.pdf}; }
-        case Sampler::CosineHemisphere: { auto s = sampleCosineHemisphere(u); return {s.direction, s.pdf}; }
-        case Sampler::UniformCone: { auto s = sampleUniformCone(u, c.cosThetaMax); return {s.direction, s.pdf}; }
-        case Sampler::UniformTriangle: { auto s = sampleUniformTriangle(c.p0, c.p1, c.p2, u); return {s.point, s.pdf}; }
-        case Sampler::SphericalTriangle: {
-            auto s = sampleSphericalTriangle(c.p, c.p0, c.p1, c.p2, u);
-            return {s.direction, s.pdf};
-        }
-    }
-    throw WireError("an unknown sampler");
-}
 
 void runUnits(ByteReader& input, ByteWriter& output, WorkerState&) {
     for (const UnitCall& call : input.getVector<UnitCall>(kMaxCalls)) output.put<double>(callUnit(call));
@@ -93,14 +79,14 @@ void runSamples(ByteReader& input, ByteWriter& output, WorkerState&) {
     if (call.count > kMaxSamplesPerCall) throw WireError("too many samples");
     Pcg32 rng(call.seed, 0);
     output.put<uint64_t>(call.count);
-    for (uint32_t i = 0; i < call.count; ++i) output.put(sample(call, uniformPair(rng)));
+    for (uint32_t i = 0; i < call.count; ++i) output.put(sampleOnce(call, uniformPair(rng)));
 }
 
 void runSamplesAt(ByteReader& input, ByteWriter& output, WorkerState&) {
     auto call = input.get<SamplerCall>();
     std::vector<Vec2> given = input.getVector<Vec2>(kMaxCalls);
     output.put<uint64_t>(given.size());
-    for (Vec2 u : given) output.put(sample(call, u));
+    for (Vec2 u : given) output.put(sampleOnce(call, u));
 }
 
 void runPdfConversions(ByteReader& input, ByteWriter& output, WorkerState&) {

@@ -1,5 +1,6 @@
-// One sample of the estimator an EstimatorCall names, through the implementation linked in: the
-// worker grades the student's with it and the tests run the reference's.
+// One sample of the sampler a SamplerCall names, or of the estimator an EstimatorCall names,
+// through the implementation linked in: the worker grades the student's with them, rtlab view
+// draws the linked one's and the tests run the reference's.
 #pragma once
 
 #include "framework/interface/a6_radiometry.h"
@@ -7,6 +8,21 @@
 #include "grader/wire/wire_format.h"
 
 namespace rtlab::grader::worker {
+
+inline SampleResult sampleOnce(const SamplerCall& c, Vec2 u) {
+    switch (c.sampler) {
+        case Sampler::UniformSphere: { auto s = sampleUniformSphere(u); return {s.direction, s.pdf}; }
+        case Sampler::UniformHemisphere: { auto s = sampleUniformHemisphere(u); return {s.direction, s.pdf}; }
+        case Sampler::CosineHemisphere: { auto s = sampleCosineHemisphere(u); return {s.direction, s.pdf}; }
+        case Sampler::UniformCone: { auto s = sampleUniformCone(u, c.cosThetaMax); return {s.direction, s.pdf}; }
+        case Sampler::UniformTriangle: { auto s = sampleUniformTriangle(c.p0, c.p1, c.p2, u); return {s.point, s.pdf}; }
+        case Sampler::SphericalTriangle: {
+            auto s = sampleSphericalTriangle(c.p, c.p0, c.p1, c.p2, u);
+            return {s.direction, s.pdf};
+        }
+    }
+    throw WireError("an unknown sampler");
+}
 
 inline Vec3 estimateSample(const EstimatorCall& c, Vec2 u, const SceneRays& rays) {
     switch (c.estimator) {
