@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <span>
 
 namespace rtlab::grader {
 namespace {
@@ -171,12 +172,12 @@ struct IzeRays {
     std::vector<Ray> rays;
 };
 
-// Every ray against both boxes; the entry distance is not judged.
+// Every ray against both boxes, ray by ray; the entry distance is not judged.
 ChildPhase izePhase(const IzeRays& ize) {
-    std::vector<worker::BoxQuery> queries;
-    for (const Ray& ray : ize.rays)
-        for (const Bounds3f& box : ize.boxes) queries.push_back({box, ray});
-    return queriesPhase(kStubBox, worker::kTaskBox, queries);
+    ByteWriter input;
+    input.putVector(std::span<const Bounds3f>(ize.boxes));
+    input.putVector(ize.rays);
+    return makePhase(kStubBox, worker::kTaskRaysAgainstBoxes, std::move(input));
 }
 
 bool exactSlab(const Bounds3f& box, const Ray& ray) {

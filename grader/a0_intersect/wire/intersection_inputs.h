@@ -6,6 +6,9 @@
 namespace rtlab::grader::worker {
 
 inline constexpr const char* kTaskBox = "box";            // [BoxQuery] -> per query u8 hit, f32 tEnter
+// [Bounds3f] boxes, [Ray] rays -> per ray, per box: u8 hit, f32 tEnter. The calls of kTaskBox on
+// every (ray, box) pair, ray by ray, in a sixth of the bytes when the boxes are few.
+inline constexpr const char* kTaskRaysAgainstBoxes = "rays-against-boxes";
 inline constexpr const char* kTaskTriangle = "triangle";  // [TriangleQuery] -> per query u8 hit, f32 t
 inline constexpr const char* kTaskClosestTriangle = "closest-triangle";  // [triangle], [Ray] -> per ray f32 nearest t
 inline constexpr const char* kTaskSphere = "sphere";      // [SphereQuery] -> per query u8 hit, f32 t

@@ -3,20 +3,31 @@
 #include "grader/a0_intersect/wire/intersection_inputs.h"
 #include "grader/worker/worker_tasks.h"
 
+#include <algorithm>
 #include <limits>
+#include <vector>
 
 namespace rtlab::grader::worker {
 namespace {
 
 constexpr uint64_t kMaxQueries = uint64_t(1) << 24;
+constexpr uint64_t kMaxBoxes = 64;
+
+void putBoxAnswer(const Bounds3f& box, const Ray& ray, ByteWriter& output) {
+    float enter = std::numeric_limits<float>::quiet_NaN();
+    bool hit = intersectBox(box, RayInverse(ray), ray.tMin, ray.tMax, &enter);
+    output.put<uint8_t>(hit);
+    output.put<float>(enter);
+}
 
 void runBoxQueries(ByteReader& input, ByteWriter& output, WorkerState&) {
-    for (const BoxQuery& q : input.getVector<BoxQuery>(kMaxQueries)) {
-        float enter = std::numeric_limits<float>::quiet_NaN();
-        bool hit = intersectBox(q.box, RayInverse(q.ray), q.ray.tMin, q.ray.tMax, &enter);
-        output.put<uint8_t>(hit);
-        output.put<float>(enter);
-    }
+    for (const BoxQuery& q : input.getVector<BoxQuery>(kMaxQueries)) putBoxAnswer(q.box, q.ray, output);
+}
+
+void runRaysAgainstBoxes(ByteReader& input, ByteWriter& output, WorkerState&) {
+    const std::vector<Bounds3f> boxes = input.getVector<Bounds3f>(kMaxBoxes);
+    for (const Ray& ray : input.getVector<Ray>(kMaxQueries / std::max<size_t>(1, boxes.size())))
+        for (const Bounds3f& box : boxes) putBoxAnswer(box, ray, output);
 }
 
 void runTriangleQueries(ByteReader& input, ByteWriter& output, WorkerState&) {
@@ -51,6 +62,7 @@ void runSphereQueries(ByteReader& input, ByteWriter& output, WorkerState&) {
 }
 
 const TaskRegistration registration{{kTaskBox, runBoxQueries},
+                                    {kTaskRaysAgainstBoxes, runRaysAgainstBoxes},
                                     {kTaskTriangle, runTriangleQueries},
                                     {kTaskClosestTriangle, runClosestTriangle},
                                     {kTaskSphere, runSphereQueries}};
