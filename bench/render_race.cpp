@@ -53,6 +53,7 @@ RenderRaceResult runRenderRace(const RenderRaceOptions& options) {
     RenderSettings settings;
     settings.width = settings.height = options.size;
     settings.threads = 1;  // POV-Ray's references render on one thread (+WT1)
+    settings.cullOutsideBounds = true;  // as rtlab-solution render does with fast/'s structures
     result.share = measureTraceShare(scene, camera, *accelerator, settings, options.repeats);
 
     // The same image from the textbook BVH (AcceleratorSpec's default), compared bit for bit.
@@ -62,7 +63,9 @@ RenderRaceResult runRenderRace(const RenderRaceOptions& options) {
     textbook->build(primitives);
     settings.progress = false;
     Image fast = Renderer(scene, camera, *accelerator).render(settings).colour;
-    Image reference = Renderer(scene, camera, *textbook).render(settings).colour;
+    RenderSettings textbookSettings = settings;
+    textbookSettings.cullOutsideBounds = false;  // every ray asked of the textbook BVH, culled or not
+    Image reference = Renderer(scene, camera, *textbook).render(textbookSettings).colour;
     for (size_t i = 0; i < fast.pixels.size(); i += fast.channels)
         result.differentPixels += std::memcmp(&fast.pixels[i], &reference.pixels[i], fast.channels * sizeof(float)) != 0;
     result.povrayVersion = povrayVersion();

@@ -111,6 +111,8 @@ void render(RenderOptions options) {
     settings.samplesPerPixel = options.samplesPerPixel;
     settings.seed = options.seed;
     settings.lightSampling = lightSampling;
+    // fast/'s structures skip the camera rays that cannot reach the scene; a student's is asked every ray.
+    settings.cullOutsideBounds = chooseAccelerator(options.accelerator).type->speedRank > 0;
     RenderResult result = Renderer(scene, camera, *accelerator).render(settings);
 
     writeImage(options.outputPath, result.colour, writeOptions);
@@ -123,12 +125,15 @@ void render(RenderOptions options) {
     total += result.shadow;
     double rays = static_cast<double>(std::max<uint64_t>(total.rays, 1));
     std::printf("rendered %dx%d at %d spp with %s on %d threads in %.3f s (build %.3f s): %.2f Mrays/s, "
-                "%llu camera + %llu shadow rays, per ray %.1f node visits",
+                "%llu camera + %llu shadow rays",
                 options.width, options.height, options.samplesPerPixel, options.accelerator.name.c_str(),
                 resolveThreadCount(options.threads), result.seconds, buildSeconds,
                 total.rays / std::max(result.seconds, 1e-9) / 1e6,
                 static_cast<unsigned long long>(result.primary.rays),
-                static_cast<unsigned long long>(result.shadow.rays), total.nodeVisits / rays);
+                static_cast<unsigned long long>(result.shadow.rays));
+    if (result.culledRays > 0)
+        std::printf(" (%llu camera rays more not traced: outside the scene's bounds)", static_cast<unsigned long long>(result.culledRays));
+    std::printf(", per ray %.1f node visits", total.nodeVisits / rays);
     // The steps only structures that take them have: a grid's cells, a KD-tree's planes.
     if (total.cellSteps > 0) std::printf(", %.1f cell steps", total.cellSteps / rays);
     if (total.planeSteps > 0) std::printf(", %.1f plane steps", total.planeSteps / rays);

@@ -56,7 +56,7 @@ Camera axisCamera(double yfov = 0.9) {
 }
 
 RenderResult renderScene(const Scene& scene, const Camera& camera, int width, int height, int threads = 2,
-                         std::vector<Aov> aovs = {}) {
+                         std::vector<Aov> aovs = {}, bool cullOutsideBounds = false) {
     PrimitiveSet primitives(scene);
     auto accelerator = makeAccelerator({.name = "brute"});
     accelerator->build(primitives);
@@ -66,6 +66,7 @@ RenderResult renderScene(const Scene& scene, const Camera& camera, int width, in
     settings.threads = threads;
     settings.aovs = std::move(aovs);
     settings.progress = false;
+    settings.cullOutsideBounds = cullOutsideBounds;
     return Renderer(scene, camera, *accelerator).render(settings);
 }
 
@@ -468,6 +469,15 @@ TEST_CASE("renderer: the batched shading of the centre-ray path is directLightin
     CHECK(plain.shadow.rays == general.shadow.rays);
     CHECK(plain.shadow.primitiveTests == general.shadow.primitiveTests);
     CHECK(plain.primary.rays == general.primary.rays);
+    CHECK(plain.culledRays == 0);
+    // Skipping the rows that cannot reach the scene's bounds changes nothing but the rays asked.
+    // A wider view, so that the floor leaves rows and tiles beside it.
+    RenderResult wide = renderScene(scene, axisCamera(2.6), 53, 37, 2, {Aov::Depth});
+    RenderResult culled = renderScene(scene, axisCamera(2.6), 53, 37, 2, {}, true);
+    CHECK(std::memcmp(culled.colour.pixels.data(), wide.colour.pixels.data(), wide.colour.pixels.size() * sizeof(float)) == 0);
+    CHECK(culled.culledRays > 0);
+    CHECK(culled.primary.rays + culled.culledRays == wide.primary.rays);
+    CHECK(culled.shadow.rays == wide.shadow.rays);
     // The same shadow rays, to the bit: their origins moved off the surface the same way.
     CHECK(shadowRaysOf(scene, 53, 37, {}) == shadowRaysOf(scene, 53, 37, {Aov::Depth}));
 }

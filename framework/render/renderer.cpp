@@ -4,6 +4,7 @@
 #include "framework/core/pcg32.h"
 #include "framework/render/accelerator_rays.h"
 #include "framework/render/area_lights.h"
+#include "framework/render/bounds_cull.h"
 #include "framework/render/direct_lighting.h"
 #include "framework/render/point_light_batch.h"
 #include "framework/render/progress_bar.h"
@@ -39,6 +40,7 @@ AovBuffers allocateAovs(const RenderSettings& settings) {
 struct TileStats {
     TraversalStats primary;
     TraversalStats shadow;
+    uint64_t culledRays = 0;
 };
 
 // The stratified samples of one pixel (docs/conventions.md#sampling): film positions, then
@@ -64,11 +66,13 @@ struct PixelSamples {
 class TileRenderer {
 public:
     TileRenderer(const Scene& scene, const Camera& camera, const Accelerator& accelerator,
-                 const TriangleSurfaces& surfaces, const RenderSettings& settings, RenderResult& result)
+                 const TriangleSurfaces& surfaces, const Bounds3f& sceneBounds, const RenderSettings& settings,
+                 RenderResult& result)
         : scene_(scene),
           accelerator_(accelerator),
           settings_(settings),
           film_(camera.film(settings.width, settings.height)),
+          cull_(film_, sceneBounds),
           surfaces_(surfaces),
           pointLights_(scene, surfaces_, accelerator),
           areaLights_(scene),
@@ -90,20 +94,25 @@ public:
 private:
     // One ray through each pixel centre, point lights only and no AOVs: every POV-Ray reference
     // and the benchmark's renders. A few rows' rays are traced, then their hits shaded together
-    // (PointLightBatch); nothing is written for a miss (the image starts black). The colour is
-    // what renderSamples computes for the same pixel, bit for bit.
+    // (PointLightBatch); nothing is written for a miss (the image starts black), nor traced for
+    // a row that cannot reach the scene (BoundsCull). The colour is what renderSamples computes
+    // for the same pixel, bit for bit.
     void renderCentres(const Tile& tile, TileStats& stats) const {
         Ray rays[kTileSize];
         HitBatch hits;
         Vec3 radiance[kHitBatchSize];
         for (int y = tile.y0; y < tile.y1; ++y) {
-            makeCentreRays(tile, y, rays);
-            for (int x = tile.x0; x < tile.x1; ++x) {
-                const Ray& ray = rays[x - tile.x0];
-                Hit hit = accelerator_.intersect(ray, stats.primary);
-                if (!hit.found()) continue;
-                surfaces_.prefetch(hit.prim);
-                hits.add(x, y, ray, hit);
+            if (settings_.cullOutsideBounds && cull_.row(y).misses(tile.x0, tile.x1)) {
+                stats.culledRays += tile.x1 - tile.x0;
+            } else {
+                makeCentreRays(tile, y, rays);
+                for (int x = tile.x0; x < tile.x1; ++x) {
+                    const Ray& ray = rays[x - tile.x0];
+                    Hit hit = accelerator_.intersect(ray, stats.primary);
+                    if (!hit.found()) continue;
+                    surfaces_.prefetch(hit.prim);
+                    hits.add(x, y, ray, hit);
+                }
             }
             if (!hits.full() && y + 1 < tile.y1) continue;
             pointLights_.shade(hits, radiance, stats.shadow);
@@ -177,6 +186,7 @@ private:
     const Accelerator& accelerator_;
     const RenderSettings& settings_;
     const CameraFilm film_;
+    const BoundsCull cull_;  // renderCentres' rows that miss the scene
     std::vector<DVec3> centreColumns_;  // film_.column of every pixel centre
     const TriangleSurfaces& surfaces_;
     const PointLightBatch pointLights_;  // renderCentres' common hits
@@ -202,7 +212,7 @@ RenderResult Renderer::render(const RenderSettings& settings) const {
     RenderResult result;
     result.colour = Image(settings.width, settings.height, 3);
     result.aovs = allocateAovs(settings);
-    const TileRenderer renderer(scene_, camera_, accelerator_, surfaces_, settings, result);
+    const TileRenderer renderer(scene_, camera_, accelerator_, surfaces_, bounds_, settings, result);
 
     std::vector<Tile> tiles = makeTiles(settings.width, settings.height);
     std::vector<TileStats> tileStats(tiles.size());
@@ -215,6 +225,7 @@ RenderResult Renderer::render(const RenderSettings& settings) const {
     for (const TileStats& stats : tileStats) {
         result.primary += stats.primary;
         result.shadow += stats.shadow;
+        result.culledRays += stats.culledRays;
     }
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

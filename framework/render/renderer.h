@@ -25,6 +25,11 @@ struct RenderSettings {
     int samplesPerPixel = 1;  // 1 = the pixel centre, as POV-Ray; N = N stratified film positions
     uint64_t seed = 0;        // the random streams of the pixels (docs/conventions.md#sampling)
     LightSampling lightSampling = LightSampling::SolidAngle;  // for emissive triangles and spheres
+    // One ray per pixel centre with point lights only and no AOVs: do not trace the camera rays
+    // of a tile's row that cannot reach the scene's bounds (BoundsCull). The image is the same
+    // with any correct accelerator. Off by default, so that a student's structure is asked
+    // every ray and its render shows every answer; the fast paths turn it on.
+    bool cullOutsideBounds = false;
 };
 
 inline constexpr int kMaxSamplesPerPixel = 1 << 16;
@@ -34,6 +39,9 @@ struct RenderResult {
     AovBuffers aovs;         // only the requested buffers are filled
     TraversalStats primary;  // camera rays
     TraversalStats shadow;   // shadow rays, and rays that look for emitters
+    // Camera rays not traced: their tile row cannot reach the scene's bounds
+    // (RenderSettings::cullOutsideBounds). primary.rays counts the others.
+    uint64_t culledRays = 0;
     double seconds = 0.0;    // wall time of rendering (the accelerator was built before)
 };
 
@@ -43,7 +51,7 @@ public:
     // triangles' shading records (TriangleSurfaces) once, for every render it makes, as the
     // accelerator is built once before them.
     Renderer(const Scene& scene, const Camera& camera, const Accelerator& accelerator)
-        : scene_(scene), camera_(camera), accelerator_(accelerator), surfaces_(scene) {}
+        : scene_(scene), camera_(camera), accelerator_(accelerator), surfaces_(scene), bounds_(scene.bounds()) {}
 
     // Throws rtlab::Error for an image size or sample count out of range, and whatever the
     // accelerator or an a6 estimator throws (rtlab::NotImplemented from a stub).
@@ -54,6 +62,7 @@ private:
     const Camera& camera_;
     const Accelerator& accelerator_;
     const TriangleSurfaces surfaces_;
+    const Bounds3f bounds_;  // the scene's, for BoundsCull
 };
 
 }  // namespace rtlab
