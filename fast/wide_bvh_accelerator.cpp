@@ -1,5 +1,6 @@
 #include "fast/wide_bvh_accelerator.h"
 
+#include "fast/light_buffer.h"
 #include "fast/simd.h"
 #include "fast/task_pool.h"
 #include "framework/core/float_bits.h"
@@ -189,6 +190,12 @@ bool WideBvhAccelerator<W>::occluded(const Ray& ray, TraversalStats& stats) cons
     ++stats.rays;
     if (nodes_.empty()) return false;
     return hasSpheres_ ? anyHit<true>(ray, stats) : anyHit<false>(ray, stats);
+}
+
+template <int W>
+std::unique_ptr<PointOccluder> WideBvhAccelerator<W>::occluderToward(const Vec3& point) const {
+    if (nodes_.empty()) return nullptr;
+    return LightBuffer::make(*primitives_, point, *this);
 }
 
 template <int W>

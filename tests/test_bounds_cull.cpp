@@ -9,7 +9,10 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <span>
+#include <vector>
 
 using namespace rtlab;
 
@@ -42,7 +45,7 @@ struct Tally {
 // Every tile row the cull skips: none of its rays reaches the box.
 Tally checkImage(const Camera& camera, const Bounds3f& box) {
     CameraFilm film = camera.film(kWidth, kHeight);
-    BoundsCull cull(film, box);
+    BoundsCull cull(film, std::span(&box, 1));
     Tally tally;
     for (const Tile& tile : makeTiles(kWidth, kHeight)) {
         for (int y = tile.y0; y < tile.y1; ++y) {
@@ -93,7 +96,7 @@ TEST_CASE("bounds cull: bounds that a pixel centre's ray touches keep that ray's
         Vec3 away(rng.uniform() < 0.5f ? 1.0f : -1.0f, rng.uniform() < 0.5f ? 1.0f : -1.0f, rng.uniform() < 0.5f ? 1.0f : -1.0f);
         Bounds3f box(onRay, onRay + away * extent);
         if (!reaches(ray, box)) continue;  // a0's test is the judge; it may round the other way
-        BoundsCull cull(film, box);
+        BoundsCull cull(film, std::span(&box, 1));
         int x0 = x / kTileSize * kTileSize;
         INFO("scene " << scene << ", pixel " << x << ", " << y);
         CHECK_FALSE(cull.row(y).misses(x0, std::min(x0 + kTileSize, kWidth)));
@@ -105,16 +108,57 @@ TEST_CASE("bounds cull: bounds that a pixel centre's ray touches keep that ray's
 TEST_CASE("bounds cull: a camera inside the bounds or bounds not finite skip nothing; empty bounds skip everything") {
     Camera camera;  // at the origin, looking down -Z
     CameraFilm film = camera.film(kWidth, kHeight);
-    Bounds3f around(Vec3(-1.0f, -1.0f, 0.0f), Vec3(1.0f, 1.0f, 2.0f));  // behind the film, around the eye
-    Bounds3f notFinite(Vec3(-kInfinity, 5.0f, -3.0f), Vec3(-4.0f, 6.0f, -2.0f));
+    auto misses = [&film](std::vector<Bounds3f> boxes, int y) { return BoundsCull(film, boxes).row(y).misses(0, kWidth); };
+    const Bounds3f around(Vec3(-1.0f, -1.0f, 0.0f), Vec3(1.0f, 1.0f, 2.0f));  // behind the film, around the eye
+    const Bounds3f notFinite(Vec3(-kInfinity, 5.0f, -3.0f), Vec3(-4.0f, 6.0f, -2.0f));
+    const Bounds3f left(Vec3(-40.0f, -1.0f, -6.0f), Vec3(-30.0f, 1.0f, -4.0f));  // in front, well to the left
+    const Bounds3f ahead(Vec3(-1.0f, -1.0f, -6.0f), Vec3(1.0f, 1.0f, -4.0f));
     for (int y = 0; y < kHeight; ++y) {
-        CHECK_FALSE(BoundsCull(film, around).row(y).misses(0, kWidth));
-        CHECK_FALSE(BoundsCull(film, notFinite).row(y).misses(0, kWidth));
-        CHECK(BoundsCull(film, Bounds3f{}).row(y).misses(0, kWidth));
+        CHECK_FALSE(misses({around}, y));
+        CHECK_FALSE(misses({left, around}, y));
+        CHECK_FALSE(misses({notFinite}, y));
+        CHECK(misses({Bounds3f{}}, y));
+        CHECK(misses({}, y));
+        CHECK(misses({left}, y));
     }
-    // The same box in front of the camera, well to its left: skipped; straight ahead: not.
-    Bounds3f left(Vec3(-40.0f, -1.0f, -6.0f), Vec3(-30.0f, 1.0f, -4.0f));
-    Bounds3f ahead(Vec3(-1.0f, -1.0f, -6.0f), Vec3(1.0f, 1.0f, -4.0f));
-    CHECK(BoundsCull(film, left).row(kHeight / 2).misses(0, kWidth));
-    CHECK_FALSE(BoundsCull(film, ahead).row(kHeight / 2).misses(0, kWidth));
+    CHECK_FALSE(misses({ahead}, kHeight / 2));
+    CHECK_FALSE(misses({left, ahead}, kHeight / 2));
+}
+
+TEST_CASE("bounds cull: two boxes leave the rows between them, which their common box would keep") {
+    Camera camera;  // at the origin, looking down -Z
+    CameraFilm film = camera.film(kWidth, kHeight);
+    const Bounds3f top(Vec3(-1.0f, 2.0f, -6.0f), Vec3(1.0f, 3.0f, -5.0f)), bottom(Vec3(-1.0f, -3.0f, -6.0f), Vec3(1.0f, -2.0f, -5.0f));
+    Bounds3f both = top;
+    both.extend(bottom);
+    std::vector<Bounds3f> pair{top, bottom};
+    CHECK(BoundsCull(film, pair).row(kHeight / 2).misses(0, kWidth));
+    CHECK_FALSE(BoundsCull(film, std::span(&both, 1)).row(kHeight / 2).misses(0, kWidth));
+}
+
+TEST_CASE("bounds cull: the scene's boxes hold every primitive and nothing beyond the scene's bounds") {
+    Scene scene;
+    Pcg32 rng(5, 9);
+    for (int i = 0; i < 200; ++i) {
+        Vec3 p = randomPoint(rng, 4.0f);
+        auto first = static_cast<uint32_t>(scene.triangles.positions.size());
+        for (int v = 0; v < 3; ++v) scene.triangles.positions.push_back(p + randomPoint(rng, 0.5f));
+        scene.triangles.indices.push_back({first, first + 1, first + 2});
+        scene.triangles.material.push_back(0);
+        scene.triangles.smooth.push_back(0);
+    }
+    scene.spheres.push_back(Sphere{{5.0f, 5.0f, 5.0f}, 1.0f, 0});
+    std::vector<Bounds3f> boxes = sceneBoxes(scene);
+    CHECK(boxes.size() == 8);
+    Bounds3f all;
+    for (const Bounds3f& box : boxes) all.extend(box);
+    CHECK(all.lower == scene.bounds().lower);
+    CHECK(all.upper == scene.bounds().upper);
+    for (uint32_t prim = 0; prim < scene.primitiveCount(); ++prim) {
+        Bounds3f b = scene.primitiveBounds(prim);
+        CHECK(std::any_of(boxes.begin(), boxes.end(), [&b](const Bounds3f& box) {
+            return glm::all(glm::lessThanEqual(box.lower, b.lower)) && glm::all(glm::lessThanEqual(b.upper, box.upper));
+        }));
+    }
+    CHECK(sceneBoxes(Scene{}).empty());
 }

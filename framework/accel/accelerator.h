@@ -3,6 +3,7 @@
 // queries. Work is counted through the Traversal context (framework/interface/traversal.h).
 #pragma once
 
+#include "framework/accel/point_occluder.h"
 #include "framework/accel/primitive_set.h"
 #include "framework/accel/structure_view.h"
 #include "framework/core/hit.h"
@@ -26,6 +27,12 @@ public:
     virtual Hit intersect(const Ray& ray, TraversalStats& stats) const = 0;
     // Any hit in (ray.tMin, ray.tMax]: for shadow rays.
     virtual bool occluded(const Ray& ray, TraversalStats& stats) const = 0;
+    // A faster occluded() for shadow rays toward point, made after build; nullptr (the
+    // default) when the structure has none, and then occluded() answers them.
+    virtual std::unique_ptr<PointOccluder> occluderToward(const Vec3& point) const {
+        (void)point;
+        return nullptr;
+    }
     virtual StructureView structure() const = 0;
     // Bytes the structure keeps beyond the primitive set (nodes, index lists, copies).
     virtual size_t memoryBytes() const = 0;

@@ -5,34 +5,43 @@
 
 namespace rtlab {
 
-BoundsCull::BoundsCull(const CameraFilm& film, const Bounds3f& sceneBounds) : film_(film) {
-    if (sceneBounds.isEmpty()) {  // no primitive: every ray misses
-        mode_ = Mode::Always;
-        return;
+std::vector<Bounds3f> sceneBoxes(const Scene& scene) {
+    const Vec3 centre = scene.bounds().centre();
+    std::array<Bounds3f, 8> octants;
+    for (uint32_t prim = 0; prim < scene.primitiveCount(); ++prim) {
+        Bounds3f box = scene.primitiveBounds(prim);
+        Vec3 c = box.centre();
+        octants[(c.x > centre.x) + 2 * (c.y > centre.y) + 4 * (c.z > centre.z)].extend(box);
     }
+    std::vector<Bounds3f> boxes;
+    for (const Bounds3f& box : octants)
+        if (!box.isEmpty()) boxes.push_back(box);
+    return boxes;
+}
+
+BoundsCull::BoundsCull(const CameraFilm& film, std::span<const Bounds3f> boxes) : film_(film) {
     const DVec3 origin(film.origin);
-    DVec3 lower = DVec3(sceneBounds.lower) - origin, upper = DVec3(sceneBounds.upper) - origin;
-    double reach = 0.0;
-    for (int axis = 0; axis < 3; ++axis) reach = std::max({reach, std::abs(lower[axis]), std::abs(upper[axis])});
-    const double margin = 1e-5 * std::sqrt(3.0) * reach;  // at least 1e-5 of the far corner's distance
-    lower -= margin;
-    upper += margin;
-    bool inside = true;
-    for (int axis = 0; axis < 3; ++axis) {
-        if (!std::isfinite(lower[axis]) || !std::isfinite(upper[axis])) return;  // Mode::Never
-        inside = inside && lower[axis] <= 0.0 && upper[axis] >= 0.0;
+    for (const Bounds3f& bounds : boxes) {
+        if (bounds.isEmpty()) continue;
+        Box& box = boxes_.emplace_back();
+        DVec3 lower = DVec3(bounds.lower) - origin, upper = DVec3(bounds.upper) - origin;
+        double reach = 0.0;
+        for (int axis = 0; axis < 3; ++axis) reach = std::max({reach, std::abs(lower[axis]), std::abs(upper[axis])});
+        const double margin = 1e-5 * std::sqrt(3.0) * reach;  // at least 1e-5 of the far corner's distance
+        lower -= margin;
+        upper += margin;
+        bool inside = true;
+        for (int axis = 0; axis < 3; ++axis) {
+            box.never = box.never || !std::isfinite(lower[axis]) || !std::isfinite(upper[axis]);
+            inside = inside && lower[axis] <= 0.0 && upper[axis] >= 0.0;
+        }
+        box.never = box.never || inside;
+        for (int i = 0; i < 8; ++i)
+            box.corners[i] = DVec3(i & 1 ? upper.x : lower.x, i & 2 ? upper.y : lower.y, i & 4 ? upper.z : lower.z);
     }
-    if (inside) return;
-    for (int i = 0; i < 8; ++i)
-        corners_[i] = DVec3(i & 1 ? upper.x : lower.x, i & 2 ? upper.y : lower.y, i & 4 ? upper.z : lower.z);
-    mode_ = Mode::Test;
 }
 
 BoundsCull::Row BoundsCull::row(int y) const {
-    Row row;
-    row.mode_ = mode_;
-    row.all_ = mode_ == Mode::Always;
-    if (mode_ != Mode::Test) return row;
     // The direction through (x, y + 0.5) is a + x * b; the row's plane has normal n.
     const DVec3 a = film_.column(0.0) + film_.row(y + 0.5), b = film_.right / film_.width;
     const DVec3 n = glm::cross(a, b);
@@ -40,26 +49,35 @@ BoundsCull::Row BoundsCull::row(int y) const {
     // a corner's side is linear in x. A zero n (a degenerate film) makes every product 0, and
     // nothing is skipped.
     const DVec3 na = glm::cross(n, a), nb = glm::cross(n, b);
-    int above = 0, below = 0;
-    for (int c = 0; c < 8; ++c) {
-        double side = glm::dot(n, corners_[c]);
-        above += side > 0.0;
-        below += side < 0.0;
-        row.offset_[c] = glm::dot(na, corners_[c]);
-        row.slope_[c] = glm::dot(nb, corners_[c]);
+    Row row;
+    for (const Box& box : boxes_) {
+        Row::Side& side = row.boxes_.emplace_back();
+        side.never = box.never;
+        int above = 0, below = 0;
+        for (int c = 0; c < 8; ++c) {
+            double height = glm::dot(n, box.corners[c]);
+            above += height > 0.0;
+            below += height < 0.0;
+            side.offset[c] = glm::dot(na, box.corners[c]);
+            side.slope[c] = glm::dot(nb, box.corners[c]);
+        }
+        side.outOfRow = above == 8 || below == 8;
     }
-    row.all_ = above == 8 || below == 8;
     return row;
 }
 
 bool BoundsCull::Row::misses(double x0, double x1) const {
-    if (mode_ != Mode::Test || all_) return all_;
-    bool left = true, right = true;
-    for (int c = 0; c < 8; ++c) {
-        left = left && offset_[c] + x0 * slope_[c] < 0.0;
-        right = right && offset_[c] + x1 * slope_[c] > 0.0;
+    for (const Side& box : boxes_) {
+        if (box.never) return false;
+        if (box.outOfRow) continue;
+        bool left = true, right = true;
+        for (int c = 0; c < 8; ++c) {
+            left = left && box.offset[c] + x0 * box.slope[c] < 0.0;
+            right = right && box.offset[c] + x1 * box.slope[c] > 0.0;
+        }
+        if (!left && !right) return false;
     }
-    return left || right;
+    return true;
 }
 
 }  // namespace rtlab

@@ -66,15 +66,15 @@ struct PixelSamples {
 class TileRenderer {
 public:
     TileRenderer(const Scene& scene, const Camera& camera, const Accelerator& accelerator,
-                 const TriangleSurfaces& surfaces, const Bounds3f& sceneBounds, const RenderSettings& settings,
+                 const TriangleSurfaces& surfaces, std::span<const Bounds3f> cullBoxes,
+                 std::span<const std::unique_ptr<PointOccluder>> occluders, const RenderSettings& settings,
                  RenderResult& result)
         : scene_(scene),
           accelerator_(accelerator),
           settings_(settings),
           film_(camera.film(settings.width, settings.height)),
-          cull_(film_, sceneBounds),
           surfaces_(surfaces),
-          pointLights_(scene, surfaces_, accelerator),
+          pointLights_(scene, surfaces_, accelerator, occluders),
           areaLights_(scene),
           reach_(sceneReach(scene)),
           anyAov_(!settings.aovs.empty()),
@@ -82,6 +82,11 @@ public:
           result_(result) {
         centreColumns_.reserve(settings.width);
         for (int x = 0; x < settings.width; ++x) centreColumns_.push_back(film_.column(x + 0.5));
+        if (centresOnly_ && settings.cullOutsideBounds) {
+            const BoundsCull cull(film_, cullBoxes);
+            cullRows_.reserve(settings.height);
+            for (int y = 0; y < settings.height; ++y) cullRows_.push_back(cull.row(y));
+        }
     }
 
     void render(const Tile& tile, TileStats& stats) const {
@@ -102,7 +107,7 @@ private:
         HitBatch hits;
         Vec3 radiance[kHitBatchSize];
         for (int y = tile.y0; y < tile.y1; ++y) {
-            if (settings_.cullOutsideBounds && cull_.row(y).misses(tile.x0, tile.x1)) {
+            if (!cullRows_.empty() && cullRows_[y].misses(tile.x0, tile.x1)) {
                 stats.culledRays += tile.x1 - tile.x0;
             } else {
                 makeCentreRays(tile, y, rays);
@@ -186,8 +191,8 @@ private:
     const Accelerator& accelerator_;
     const RenderSettings& settings_;
     const CameraFilm film_;
-    const BoundsCull cull_;  // renderCentres' rows that miss the scene
     std::vector<DVec3> centreColumns_;  // film_.column of every pixel centre
+    std::vector<BoundsCull::Row> cullRows_;  // every image row's, with cullOutsideBounds
     const TriangleSurfaces& surfaces_;
     const PointLightBatch pointLights_;  // renderCentres' common hits
     const AreaLights areaLights_;
@@ -198,6 +203,11 @@ private:
 };
 
 }  // namespace
+
+Renderer::Renderer(const Scene& scene, const Camera& camera, const Accelerator& accelerator)
+    : scene_(scene), camera_(camera), accelerator_(accelerator), surfaces_(scene), cullBoxes_(sceneBoxes(scene)) {
+    for (const PointLight& light : scene.lights) occluders_.push_back(accelerator.occluderToward(light.position));
+}
 
 RenderResult Renderer::render(const RenderSettings& settings) const {
     if (settings.width < 1 || settings.height < 1 || settings.width > kMaxImageSide ||
@@ -212,7 +222,7 @@ RenderResult Renderer::render(const RenderSettings& settings) const {
     RenderResult result;
     result.colour = Image(settings.width, settings.height, 3);
     result.aovs = allocateAovs(settings);
-    const TileRenderer renderer(scene_, camera_, accelerator_, surfaces_, bounds_, settings, result);
+    const TileRenderer renderer(scene_, camera_, accelerator_, surfaces_, cullBoxes_, occluders_, settings, result);
 
     std::vector<Tile> tiles = makeTiles(settings.width, settings.height);
     std::vector<TileStats> tileStats(tiles.size());

@@ -50,8 +50,9 @@ public:
     // The accelerator must have been built over a PrimitiveSet of this scene. Gathers the
     // triangles' shading records (TriangleSurfaces) once, for every render it makes, as the
     // accelerator is built once before them.
-    Renderer(const Scene& scene, const Camera& camera, const Accelerator& accelerator)
-        : scene_(scene), camera_(camera), accelerator_(accelerator), surfaces_(scene), bounds_(scene.bounds()) {}
+    // Asks the accelerator for an occluder toward each point light (Accelerator::occluderToward),
+    // once, as it gathers the records.
+    Renderer(const Scene& scene, const Camera& camera, const Accelerator& accelerator);
 
     // Throws rtlab::Error for an image size or sample count out of range, and whatever the
     // accelerator or an a6 estimator throws (rtlab::NotImplemented from a stub).
@@ -62,7 +63,8 @@ private:
     const Camera& camera_;
     const Accelerator& accelerator_;
     const TriangleSurfaces surfaces_;
-    const Bounds3f bounds_;  // the scene's, for BoundsCull
+    const std::vector<Bounds3f> cullBoxes_;  // sceneBoxes, for BoundsCull
+    std::vector<std::unique_ptr<PointOccluder>> occluders_;  // per point light; null: none
 };
 
 }  // namespace rtlab

@@ -14,36 +14,62 @@ namespace {
 struct Query {
     Ray ray;
     bool anyHit;
+    const PointOccluder* occluder;  // what answered an any-hit query: this, or (null) the accelerator
 };
 
-// An accelerator that answers through a built one and writes down every query.
+class QueryLog {
+public:
+    void record(const Ray& ray, bool anyHit, const PointOccluder* occluder) {
+        std::lock_guard lock(mutex_);
+        queries_.push_back({ray, anyHit, occluder});
+    }
+    std::vector<Query> take() { return std::move(queries_); }
+
+private:
+    std::mutex mutex_;
+    std::vector<Query> queries_;
+};
+
+// An occluder that answers through the accelerator's own and writes down every query.
+class RecordingOccluder : public PointOccluder {
+public:
+    RecordingOccluder(std::unique_ptr<PointOccluder> inner, QueryLog& log) : inner_(std::move(inner)), log_(log) {}
+    bool occluded(const Ray& ray, TraversalStats& stats) const override {
+        log_.record(ray, true, inner_.get());
+        return inner_->occluded(ray, stats);
+    }
+
+private:
+    std::unique_ptr<PointOccluder> inner_;
+    QueryLog& log_;
+};
+
+// An accelerator that answers through a built one and writes down every query, those its
+// occluders answer included.
 class RecordingAccelerator : public Accelerator {
 public:
-    explicit RecordingAccelerator(const Accelerator& inner) : inner_(inner) {}
+    RecordingAccelerator(const Accelerator& inner, QueryLog& log) : inner_(inner), log_(log) {}
 
     void build(const PrimitiveSet&) override { throw Error("RecordingAccelerator: records a built accelerator"); }
     Hit intersect(const Ray& ray, TraversalStats& stats) const override {
-        record(ray, false);
+        log_.record(ray, false, nullptr);
         return inner_.intersect(ray, stats);
     }
     bool occluded(const Ray& ray, TraversalStats& stats) const override {
-        record(ray, true);
+        log_.record(ray, true, nullptr);
         return inner_.occluded(ray, stats);
+    }
+    std::unique_ptr<PointOccluder> occluderToward(const Vec3& point) const override {
+        std::unique_ptr<PointOccluder> inner = inner_.occluderToward(point);
+        if (!inner) return nullptr;
+        return std::make_unique<RecordingOccluder>(std::move(inner), log_);
     }
     StructureView structure() const override { return inner_.structure(); }
     size_t memoryBytes() const override { return inner_.memoryBytes(); }
 
-    std::vector<Query> takeQueries() { return std::move(queries_); }
-
 private:
-    void record(const Ray& ray, bool anyHit) const {
-        std::lock_guard lock(mutex_);
-        queries_.push_back({ray, anyHit});
-    }
-
     const Accelerator& inner_;
-    mutable std::mutex mutex_;
-    mutable std::vector<Query> queries_;
+    QueryLog& log_;
 };
 
 // Traces the queries in chunks of consecutive ones, as the renderer's tiles hand out its rays.
@@ -55,7 +81,9 @@ double traceSeconds(const Accelerator& accelerator, const std::vector<Query>& qu
     parallelFor(chunks, threads, [&](size_t chunk) {
         size_t end = std::min(queries.size(), (chunk + 1) * kChunk);
         for (size_t i = chunk * kChunk; i < end; ++i) {
-            if (queries[i].anyHit)
+            if (queries[i].occluder)
+                queries[i].occluder->occluded(queries[i].ray, stats[chunk]);
+            else if (queries[i].anyHit)
                 accelerator.occluded(queries[i].ray, stats[chunk]);
             else
                 accelerator.intersect(queries[i].ray, stats[chunk]);
@@ -90,9 +118,12 @@ TraceShare measureTraceShare(const Scene& scene, const Camera& camera, const Acc
     // the set of queries, is the same for every thread count.
     RenderSettings recording = settings;
     recording.threads = 1;
-    RecordingAccelerator recorder(accelerator);
-    Renderer(scene, camera, recorder).render(recording);
-    std::vector<Query> queries = recorder.takeQueries();
+    QueryLog log;
+    RecordingAccelerator recorder(accelerator, log);
+    // Kept: it holds the occluders the queries it recorded are traced with again.
+    const Renderer recordingRenderer(scene, camera, recorder);
+    recordingRenderer.render(recording);
+    std::vector<Query> queries = log.take();
 
     TraceShare share;
     share.queries = queries.size();

@@ -1,0 +1,194 @@
+#include "fast/light_buffer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rtlab {
+namespace {
+
+constexpr double kUnitRoundoff = 0x1p-24;  // u: float's relative rounding
+constexpr double kMarginFactor = 64.0;     // margins in units of u reach
+constexpr double kMinCosine = 0.2;         // the bounds' corners within 78 degrees of the axis
+constexpr double kMinNearness = 1e-3;      // triangles at least this share of the reach away
+constexpr double kCellsPerTriangle = 4.0;
+constexpr size_t kMaxEntriesPerTriangle = 8;
+
+// The distance from p to the nearest point of box.
+double distanceTo(const DVec3& p, const DVec3& lower, const DVec3& upper) {
+    DVec3 outside = glm::max(glm::max(lower - p, p - upper), DVec3(0.0));
+    return glm::length(outside);
+}
+
+struct Entry {
+    double reach;  // the triangle's nearest distance to the light
+    uint32_t prim;
+};
+
+}  // namespace
+
+bool LightBuffer::project(const DVec3& p, double& x, double& y) const {
+    DVec3 w = p - DVec3(light_);
+    double along = glm::dot(w, axis_);
+    if (!(along > 0.0)) return false;
+    x = glm::dot(w, u_) / along;
+    y = glm::dot(w, v_) / along;
+    return true;
+}
+
+std::unique_ptr<LightBuffer> LightBuffer::make(const PrimitiveSet& primitives, const Vec3& light, const Accelerator& fallback) {
+    const uint32_t n = primitives.triangleCount();
+    if (n == 0 || n != primitives.size()) return nullptr;
+    std::unique_ptr<LightBuffer> buffer(new LightBuffer(light, fallback));
+    LightBuffer& b = *buffer;
+
+    Bounds3f bounds;
+    for (uint32_t prim = 0; prim < n; ++prim)
+        for (const Vec3& vertex : primitives.triangle(prim)) bounds.extend(vertex);
+    const DVec3 origin(light);
+    DVec3 towards = DVec3(bounds.centre()) - origin;
+    double length = glm::length(towards);
+    if (!(length > 0.0) || !std::isfinite(length)) return nullptr;
+    b.axis_ = towards / length;
+    DVec3 helper = std::abs(b.axis_.x) < 0.9 ? DVec3(1.0, 0.0, 0.0) : DVec3(0.0, 1.0, 0.0);
+    b.u_ = glm::normalize(glm::cross(b.axis_, helper));
+    b.v_ = glm::cross(b.axis_, b.u_);
+
+    // The cone: every corner in front, within kMinCosine of the axis; the reach.
+    double minCosine = 1.0, reach = 0.0;
+    for (int i = 0; i < 8; ++i) {
+        DVec3 corner(bounds[i & 1].x, bounds[(i >> 1) & 1].y, bounds[(i >> 2) & 1].z);
+        DVec3 w = corner - origin;
+        double distance = glm::length(w);
+        if (!(distance > 0.0) || !std::isfinite(distance)) return nullptr;
+        minCosine = std::min(minCosine, glm::dot(w, b.axis_) / distance);
+        reach = std::max(reach, distance);
+    }
+    if (!(minCosine > kMinCosine)) return nullptr;
+    b.slack_ = kMarginFactor * kUnitRoundoff * reach;
+    // A change of direction by an angle a moves a projected point by up to a / cos^2 of its
+    // angle to the axis; twice that, for the directions a margin away from the cone's.
+    const double planeScale = 2.0 / (minCosine * minCosine);
+
+    // Each triangle's rectangle on the plane, widened by its margin.
+    struct Rect {
+        double x0, y0, x1, y1, reach;
+    };
+    std::vector<Rect> rects(n);
+    double gridX0 = kInfinity, gridY0 = kInfinity, gridX1 = -kInfinity, gridY1 = -kInfinity;
+    for (uint32_t prim = 0; prim < n; ++prim) {
+        const auto& triangle = primitives.triangle(prim);
+        DVec3 lower(kInfinity), upper(-kInfinity);
+        Rect rect{kInfinity, kInfinity, -kInfinity, -kInfinity, 0.0};
+        for (const Vec3& vertex : triangle) {
+            double x = 0.0, y = 0.0;
+            if (!b.project(DVec3(vertex), x, y)) return nullptr;
+            rect.x0 = std::min(rect.x0, x);
+            rect.y0 = std::min(rect.y0, y);
+            rect.x1 = std::max(rect.x1, x);
+            rect.y1 = std::max(rect.y1, y);
+            lower = glm::min(lower, DVec3(vertex));
+            upper = glm::max(upper, DVec3(vertex));
+        }
+        rect.reach = distanceTo(origin, lower, upper);
+        if (!(rect.reach >= kMinNearness * reach)) return nullptr;
+        double margin = planeScale * kMarginFactor * kUnitRoundoff * reach / rect.reach;
+        rect = {rect.x0 - margin, rect.y0 - margin, rect.x1 + margin, rect.y1 + margin, rect.reach};
+        rects[prim] = rect;
+        gridX0 = std::min(gridX0, rect.x0);
+        gridY0 = std::min(gridY0, rect.y0);
+        gridX1 = std::max(gridX1, rect.x1);
+        gridY1 = std::max(gridY1, rect.y1);
+    }
+
+    // Square cells, about kCellsPerTriangle per triangle, or larger ones while the lists would
+    // hold more than kMaxEntriesPerTriangle entries a triangle (long thin triangles, whose
+    // rectangles cover many cells: the engine's).
+    const double width = gridX1 - gridX0, height = gridY1 - gridY0;
+    b.gridX_ = gridX0;
+    b.gridY_ = gridY0;
+    b.cellSize_ = std::max(std::sqrt(width * height / (kCellsPerTriangle * n)), 1e-9 * std::max(width, height));
+    for (;;) {
+        b.columns_ = std::clamp(int(std::ceil(width / b.cellSize_)), 1, 4096);
+        b.rows_ = std::clamp(int(std::ceil(height / b.cellSize_)), 1, 4096);
+        b.cellSize_ = std::max(width / b.columns_, height / b.rows_);
+        size_t entries = 0;
+        for (const Rect& rect : rects)
+            entries += size_t(b.cellOf(rect.x1, b.gridX_, b.columns_) - b.cellOf(rect.x0, b.gridX_, b.columns_) + 1) *
+                       size_t(b.cellOf(rect.y1, b.gridY_, b.rows_) - b.cellOf(rect.y0, b.gridY_, b.rows_) + 1);
+        if (entries <= kMaxEntriesPerTriangle * n || (b.columns_ == 1 && b.rows_ == 1)) break;
+        b.cellSize_ *= 1.5;
+    }
+
+    // Each cell's triangles, counted, placed, then sorted nearest first.
+    const size_t cells = size_t(b.columns_) * b.rows_;
+    std::vector<uint32_t> entryStart(cells + 1, 0);
+    auto eachCell = [&b](const Rect& rect, auto&& visit) {
+        int x0 = b.cellOf(rect.x0, b.gridX_, b.columns_), x1 = b.cellOf(rect.x1, b.gridX_, b.columns_);
+        int y0 = b.cellOf(rect.y0, b.gridY_, b.rows_), y1 = b.cellOf(rect.y1, b.gridY_, b.rows_);
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) visit(size_t(y) * b.columns_ + x);
+    };
+    for (const Rect& rect : rects) eachCell(rect, [&](size_t cell) { ++entryStart[cell + 1]; });
+    for (size_t cell = 0; cell < cells; ++cell) entryStart[cell + 1] += entryStart[cell];
+    std::vector<Entry> list(entryStart.back());
+    std::vector<uint32_t> fill(entryStart.begin(), entryStart.end() - 1);
+    for (uint32_t prim = 0; prim < n; ++prim)
+        eachCell(rects[prim], [&](size_t cell) { list[fill[cell]++] = Entry{rects[prim].reach, prim}; });
+
+    // Four triangles to a packet, a cell's packets in a row; a packet's reach is its first
+    // triangle's, the nearest.
+    b.cellStart_.assign(cells + 1, 0);
+    for (size_t cell = 0; cell < cells; ++cell) {
+        uint32_t count = entryStart[cell + 1] - entryStart[cell];
+        b.cellStart_[cell + 1] = b.cellStart_[cell] + (count + TrianglePacket::kLanes - 1) / TrianglePacket::kLanes;
+    }
+    b.packets_.resize(b.cellStart_.back());
+    b.packetReach_.resize(b.cellStart_.back());
+    for (size_t cell = 0; cell < cells; ++cell) {
+        Entry* first = list.data() + entryStart[cell];
+        Entry* last = list.data() + entryStart[cell + 1];
+        std::sort(first, last, [](const Entry& a, const Entry& c) { return a.reach < c.reach || (a.reach == c.reach && a.prim < c.prim); });
+        uint32_t packet = b.cellStart_[cell];
+        for (Entry* e = first; e < last; e += TrianglePacket::kLanes, ++packet) {
+            uint32_t ids[TrianglePacket::kLanes];
+            int count = int(std::min<ptrdiff_t>(TrianglePacket::kLanes, last - e));
+            for (int lane = 0; lane < count; ++lane) ids[lane] = e[lane].prim;
+            b.packets_[packet].fill(primitives, std::span<const uint32_t>(ids, size_t(count)));
+            // Rounded down, so that a float comparison never skips a packet the double one keeps.
+            b.packetReach_[packet] = std::nextafter(float(e->reach), 0.0f);
+        }
+    }
+    return buffer;
+}
+
+int LightBuffer::cellOf(double value, double gridStart, int cells) const {
+    return std::clamp(int(std::floor((value - gridStart) / cellSize_)), 0, cells - 1);
+}
+
+bool LightBuffer::occluded(const Ray& ray, TraversalStats& stats) const {
+    double x = 0.0, y = 0.0;
+    if (!(ray.tMin >= 0.0f && ray.tMax <= 1.0f) || ray.direction != light_ - ray.origin ||
+        !project(DVec3(ray.origin), x, y))
+        return fallback_.occluded(ray, stats);
+    ++stats.rays;
+    // Outside the grid no triangle's widened rectangle holds the origin's direction: nothing
+    // lies between it and the light.
+    if (x < gridX_ || y < gridY_ || x > gridX_ + columns_ * cellSize_ || y > gridY_ + rows_ * cellSize_) return false;
+    ++stats.nodeVisits;  // the cell
+    const size_t cell = size_t(cellOf(y, gridY_, rows_)) * columns_ + cellOf(x, gridX_, columns_);
+    // A triangle farther from the light than the origin (by more than the rounding slack) is
+    // behind the whole segment.
+    const double limit = glm::length(DVec3(ray.origin) - DVec3(light_)) + slack_;
+    const ShearedRay sheared(ray);
+    for (uint32_t p = cellStart_[cell]; p < cellStart_[cell + 1] && packetReach_[p] <= limit; ++p) {
+        stats.primitiveTests += TrianglePacket::kLanes;
+        if (sheared.anyHit(packets_[p], ray.tMax)) return true;
+    }
+    return false;
+}
+
+size_t LightBuffer::memoryBytes() const {
+    return cellStart_.size() * sizeof(uint32_t) + packets_.size() * (sizeof(TrianglePacket) + sizeof(float));
+}
+
+}  // namespace rtlab

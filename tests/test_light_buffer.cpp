@@ -1,0 +1,186 @@
+// The light buffer (fast/light_buffer.h): every shadow ray it is asked answered as the wide
+// BVH answers it, on the bunny and the engine, for lights on every side and at several
+// distances, from surface points offset as the renderer offsets them, from triangles' corners
+// and edges (where shared edges leak), and from anywhere; rays not aimed at the light go to the
+// BVH; it declines what it cannot be sure of; and a render through it is the textbook BVH's
+// image to the bit.
+#include "fast/light_buffer.h"
+#include "framework/accel/accelerator.h"
+#include "framework/core/pcg32.h"
+#include "framework/render/renderer.h"
+#include "framework/render/spawn_ray.h"
+#include "framework/scene/benchmark_rays.h"
+#include "tests/fetched_models.h"
+
+#include <doctest/doctest.h>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+using namespace rtlab;
+
+namespace {
+
+std::unique_ptr<Accelerator> built(const std::string& name, const PrimitiveSet& prims) {
+    AcceleratorSpec spec;
+    spec.name = name;
+    auto accel = makeAccelerator(spec);
+    accel->build(prims);
+    return accel;
+}
+
+// Lights around the bounds: along each axis both ways and along diagonals, from just beyond
+// the bounds to far away.
+std::vector<Vec3> lightsAround(const Bounds3f& bounds) {
+    std::vector<Vec3> lights;
+    const Vec3 centre = bounds.centre();
+    const float size = glm::length(bounds.diagonal());
+    const Vec3 directions[] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0.6f, 0.7f, -0.4f}, {-0.3f, 0.8f, 0.5f}};
+    for (const Vec3& d : directions)
+        for (float distance : {1.2f, 3.0f, 20.0f}) lights.push_back(centre + distance * size * glm::normalize(d));
+    return lights;
+}
+
+struct Tally {
+    int rays = 0, blocked = 0, disagree = 0;
+    void add(bool buffer, bool bvh) {
+        ++rays;
+        blocked += bvh;
+        disagree += buffer != bvh;
+    }
+};
+
+}  // namespace
+
+TEST_CASE("light buffer: every shadow ray answered as the wide BVH answers it") {
+    for (std::string file : {"bunny.gltf", "engine.glb"}) {
+        CAPTURE(file);
+        Scene scene = loadFetchedModel(file.c_str());
+        PrimitiveSet prims(scene);
+        const Bounds3f bounds = scene.bounds();
+        auto fast = built("fastbvh", prims);
+        std::vector<Ray> cameraRays = makeBenchmarkRays(RayKind::Primary, bounds);
+        Pcg32 rng(3, 4);
+        int made = 0;
+        for (const Vec3& light : lightsAround(bounds)) {
+            CAPTURE(light);
+            std::unique_ptr<PointOccluder> buffer = fast->occluderToward(light);
+            if (!buffer) continue;  // a light too near a triangle, or beside the bounds
+            ++made;
+            TraversalStats stats;
+            Tally fromSurfaces, fromCorners, fromAnywhere, fromBeyond;
+            // The renderer's shadow rays: from hit points, offset off the surface.
+            for (size_t i = 0; i < cameraRays.size(); i += 97) {
+                Hit hit = fast->intersect(cameraRays[i], stats);
+                if (!hit.found()) continue;
+                SurfaceHit surface = scene.surfaceAt(cameraRays[i], hit);
+                Ray ray = spawnShadowRay(surface.point, surface.pointError, surface.geometricNormal, light);
+                fromSurfaces.add(buffer->occluded(ray, stats), fast->occluded(ray, stats));
+            }
+            // From corners and edge points of triangles, not offset: rays that graze their own
+            // triangle and its neighbours, through shared edges.
+            for (int i = 0; i < 3000; ++i) {
+                const auto& triangle = prims.triangle(uint32_t(rng.uniform() * prims.triangleCount()) % prims.triangleCount());
+                float s = rng.uniform() < 0.5f ? 0.0f : rng.uniform();
+                Vec3 origin = (1.0f - s) * triangle[i % 3] + s * triangle[(i + 1) % 3];
+                Ray ray;
+                ray.origin = origin;
+                ray.direction = light - origin;
+                ray.tMin = kShadowEpsilon;
+                ray.tMax = 1.0f - kShadowEpsilon;
+                fromCorners.add(buffer->occluded(ray, stats), fast->occluded(ray, stats));
+                ray.tMin = 0.0f;
+                ray.tMax = 1.0f;
+                fromCorners.add(buffer->occluded(ray, stats), fast->occluded(ray, stats));
+            }
+            // From anywhere in and around the bounds.
+            for (int i = 0; i < 3000; ++i) {
+                Vec3 t(rng.uniform(), rng.uniform(), rng.uniform());
+                Vec3 origin = bounds.lower - 0.1f * bounds.diagonal() + 1.2f * t * bounds.diagonal();
+                Ray ray;
+                ray.origin = origin;
+                ray.direction = light - origin;
+                ray.tMin = kShadowEpsilon;
+                ray.tMax = 1.0f - kShadowEpsilon;
+                fromAnywhere.add(buffer->occluded(ray, stats), fast->occluded(ray, stats));
+            }
+            // From far beyond the scene, through it toward the light: the rounding of these rays'
+            // directions moves them by a sizeable part of a cell near the light, which the
+            // margins must cover.
+            for (int i = 0; i < 3000; ++i) {
+                // Half through an edge point of a triangle, half through any point of the bounds.
+                const auto& triangle = prims.triangle(uint32_t(rng.uniform() * prims.triangleCount()) % prims.triangleCount());
+                float s = rng.uniform();
+                Vec3 anywhere = bounds.lower + Vec3(rng.uniform(), rng.uniform(), rng.uniform()) * bounds.diagonal();
+                Vec3 target = i % 2 ? (1.0f - s) * triangle[i % 3] + s * triangle[(i + 1) % 3] : anywhere;
+                Ray ray;
+                ray.origin = light + (50.0f + 2000.0f * rng.uniform()) * (target - light);
+                ray.direction = light - ray.origin;
+                ray.tMin = 0.0f;
+                ray.tMax = 1.0f;
+                fromBeyond.add(buffer->occluded(ray, stats), fast->occluded(ray, stats));
+            }
+            CHECK(fromSurfaces.disagree == 0);
+            CHECK(fromCorners.disagree == 0);
+            CHECK(fromAnywhere.disagree == 0);
+            CHECK(fromBeyond.disagree == 0);
+            // Not vacuous: some rays of each kind are blocked and some are not.
+            for (const Tally* tally : {&fromSurfaces, &fromCorners, &fromAnywhere, &fromBeyond}) {
+                CHECK(tally->blocked > 0);
+                CHECK(tally->blocked < tally->rays);
+            }
+        }
+        CHECK(made >= 16);  // of the 24 lights
+    }
+}
+
+TEST_CASE("light buffer: rays not aimed at its light are the BVH's, and it declines what it cannot be sure of") {
+    Scene scene = loadFetchedModel("bunny.gltf");
+    PrimitiveSet prims(scene);
+    const Bounds3f bounds = scene.bounds();
+    auto fast = built("fastbvh", prims);
+    const Vec3 light = bounds.centre() + 3.0f * bounds.diagonal();
+    std::unique_ptr<PointOccluder> buffer = fast->occluderToward(light);
+    REQUIRE(buffer);
+    TraversalStats stats;
+    int disagree = 0;
+    for (const Ray& ray : makeBenchmarkRays(RayKind::Incoherent, bounds)) {
+        Ray segment = ray;
+        segment.tMax = 0.5f * glm::length(bounds.diagonal());
+        disagree += buffer->occluded(segment, stats) != fast->occluded(segment, stats);
+    }
+    CHECK(disagree == 0);
+
+    CHECK_FALSE(fast->occluderToward(bounds.centre()));  // inside the bounds
+    CHECK_FALSE(fast->occluderToward(prims.triangle(0)[0]));  // on a triangle
+    // Beside the bounds: the scene fills more than a cone of 78 degrees around the light.
+    CHECK_FALSE(fast->occluderToward(Vec3(bounds.upper.x + 0.01f * bounds.diagonal().x, bounds.centre().y, bounds.centre().z)));
+    // A sphere among the primitives.
+    Scene withSphere = scene;
+    withSphere.spheres.push_back(Sphere{bounds.centre(), 0.01f, 0});
+    PrimitiveSet spherePrims(withSphere);
+    CHECK_FALSE(built("fastbvh", spherePrims)->occluderToward(light));
+    // The textbook structures make none.
+    CHECK_FALSE(built("bvh-buckets", prims)->occluderToward(light));
+}
+
+TEST_CASE("light buffer: a render through it is the textbook BVH's image to the bit") {
+    Scene scene = loadFetchedModel("bunny.gltf");
+    PrimitiveSet prims(scene);
+    auto fast = built("fastbvh", prims);
+    auto textbook = built("bvh-buckets", prims);
+    const Camera camera = scene.cameras.empty() ? BenchmarkView(scene.bounds()).camera() : scene.cameras.front();
+    REQUIRE_FALSE(scene.lights.empty());
+    for (const PointLight& light : scene.lights) CHECK(fast->occluderToward(light.position));
+    RenderSettings settings;
+    settings.width = settings.height = 160;
+    settings.threads = 2;
+    settings.progress = false;
+    RenderResult reference = Renderer(scene, camera, *textbook).render(settings);
+    settings.cullOutsideBounds = true;
+    RenderResult ours = Renderer(scene, camera, *fast).render(settings);
+    REQUIRE(ours.colour.pixels.size() == reference.colour.pixels.size());
+    CHECK(std::memcmp(ours.colour.pixels.data(), reference.colour.pixels.data(), ours.colour.pixels.size() * sizeof(float)) == 0);
+    CHECK(ours.shadow.rays == reference.shadow.rays);
+}
