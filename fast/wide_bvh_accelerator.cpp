@@ -1,6 +1,6 @@
 #include "fast/wide_bvh_accelerator.h"
 
-#include "fast/light_buffer.h"
+#include "fast/point_view.h"
 #include "fast/simd.h"
 #include "fast/task_pool.h"
 #include "framework/core/float_bits.h"
@@ -193,9 +193,9 @@ bool WideBvhAccelerator<W>::occluded(const Ray& ray, TraversalStats& stats) cons
 }
 
 template <int W>
-std::unique_ptr<PointOccluder> WideBvhAccelerator<W>::occluderToward(const Vec3& point) const {
+std::unique_ptr<PointQueries> WideBvhAccelerator<W>::queriesAt(const Vec3& point) const {
     if (nodes_.empty()) return nullptr;
-    return LightBuffer::make(*primitives_, point, *this);
+    return PointView::make(*primitives_, point, *this);
 }
 
 template <int W>

@@ -37,8 +37,8 @@ public:
     // Node visits count wide nodes (W box tests each).
     Hit intersect(const Ray& ray, TraversalStats& stats) const override;
     bool occluded(const Ray& ray, TraversalStats& stats) const override;
-    // A light buffer (light_buffer.h), or nullptr where it cannot help.
-    std::unique_ptr<PointOccluder> occluderToward(const Vec3& point) const override;
+    // The scene seen from point (point_view.h), or nullptr where it cannot help.
+    std::unique_ptr<PointQueries> queriesAt(const Vec3& point) const override;
     StructureView structure() const override;
     size_t memoryBytes() const override;
 

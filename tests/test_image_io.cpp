@@ -35,7 +35,7 @@ static std::vector<Code> readCodes(const fs::path& path, OIIO::TypeDesc expected
 static Image rowImage(const std::vector<float>& values) {
     REQUIRE(values.size() % 3 == 0);
     Image image(static_cast<int>(values.size() / 3), 1, 3);
-    image.pixels = values;
+    image.pixels.assign(values.begin(), values.end());
     return image;
 }
 

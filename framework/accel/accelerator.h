@@ -3,7 +3,7 @@
 // queries. Work is counted through the Traversal context (framework/interface/traversal.h).
 #pragma once
 
-#include "framework/accel/point_occluder.h"
+#include "framework/accel/point_queries.h"
 #include "framework/accel/primitive_set.h"
 #include "framework/accel/structure_view.h"
 #include "framework/core/hit.h"
@@ -27,9 +27,9 @@ public:
     virtual Hit intersect(const Ray& ray, TraversalStats& stats) const = 0;
     // Any hit in (ray.tMin, ray.tMax]: for shadow rays.
     virtual bool occluded(const Ray& ray, TraversalStats& stats) const = 0;
-    // A faster occluded() for shadow rays toward point, made after build; nullptr (the
-    // default) when the structure has none, and then occluded() answers them.
-    virtual std::unique_ptr<PointOccluder> occluderToward(const Vec3& point) const {
+    // Faster queries along rays that start or end at point, made after build; nullptr (the
+    // default) when the structure has none, and then intersect() and occluded() answer them.
+    virtual std::unique_ptr<PointQueries> queriesAt(const Vec3& point) const {
         (void)point;
         return nullptr;
     }

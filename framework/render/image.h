@@ -3,6 +3,7 @@
 #pragma once
 
 #include "framework/core/vec.h"
+#include "framework/core/zeroed_allocator.h"
 
 #include <cstddef>
 #include <vector>
@@ -13,11 +14,11 @@ struct Image {
     int width = 0;
     int height = 0;
     int channels = 0;
-    std::vector<float> pixels;  // (y * width + x) * channels + c
+    // (y * width + x) * channels + c; zero from calloc, not written twice (zeroed_allocator.h)
+    std::vector<float, ZeroedAllocator<float>> pixels;
 
     Image() = default;
-    Image(int w, int h, int c)
-        : width(w), height(h), channels(c), pixels(static_cast<size_t>(w) * h * c, 0.0f) {}
+    Image(int w, int h, int c) : width(w), height(h), channels(c), pixels(static_cast<size_t>(w) * h * c) {}
 
     size_t index(int x, int y) const { return (static_cast<size_t>(y) * width + x) * channels; }
     float& at(int x, int y, int c) { return pixels[index(x, y) + c]; }

@@ -50,8 +50,8 @@ struct PointLightBatch::Lanes {
 };
 
 PointLightBatch::PointLightBatch(const Scene& scene, const TriangleSurfaces& surfaces, const Accelerator& accelerator,
-                                 std::span<const std::unique_ptr<PointOccluder>> occluders)
-    : scene_(scene), accelerator_(accelerator), occluders_(occluders), surfaces_(surfaces) {
+                                 std::span<const std::unique_ptr<PointQueries>> lightQueries)
+    : scene_(scene), accelerator_(accelerator), lightQueries_(lightQueries), surfaces_(surfaces) {
     for (const Material& material : scene.materials) {
         inLanes_.push_back(material.emission == Vec3(0.0f) && material.albedo != Vec3(0.0f));
         brdf_.push_back(material.albedo * std::numbers::inv_pi_v<float>);
@@ -62,7 +62,7 @@ void PointLightBatch::shade(const HitBatch& hits, Vec3* radiance, TraversalStats
     Lanes lanes;
     gather(hits, lanes, radiance, shadowStats);
     for (size_t i = 0; i < scene_.lights.size(); ++i)
-        addLight(scene_.lights[i], i < occluders_.size() ? occluders_[i].get() : nullptr, lanes, shadowStats);
+        addLight(scene_.lights[i], i < lightQueries_.size() ? lightQueries_[i].get() : nullptr, lanes, shadowStats);
     for (int k = 0; k < lanes.count; ++k)
         radiance[lanes.hit[k]] = {lanes.radiance.x[k], lanes.radiance.y[k], lanes.radiance.z[k]};
 }
@@ -128,7 +128,7 @@ void PointLightBatch::gather(const HitBatch& hits, Lanes& lanes, Vec3* radiance,
 }
 
 // directLighting's loop body for one light, a step at a time over the lanes.
-void PointLightBatch::addLight(const PointLight& light, const PointOccluder* occluder, Lanes& lanes,
+void PointLightBatch::addLight(const PointLight& light, const PointQueries* queries, Lanes& lanes,
                                TraversalStats& shadowStats) const {
     const int n = lanes.count;
     const Floats3& p = lanes.point;
@@ -164,7 +164,7 @@ void PointLightBatch::addLight(const PointLight& light, const PointOccluder* occ
         shadowRay.direction = {direction.x[k], direction.y[k], direction.z[k]};
         shadowRay.tMin = kShadowEpsilon;
         shadowRay.tMax = 1.0f - kShadowEpsilon;
-        lit[k] = !(occluder ? occluder->occluded(shadowRay, shadowStats) : accelerator_.occluded(shadowRay, shadowStats));
+        lit[k] = !(queries ? queries->occluded(shadowRay, shadowStats) : accelerator_.occluded(shadowRay, shadowStats));
     }
     // brdf * intensity * (cosine / d^2), added where the light is seen.
     const Vec3 intensity = light.intensity;

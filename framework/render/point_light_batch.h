@@ -43,10 +43,10 @@ struct HitBatch {
 
 class PointLightBatch {
 public:
-    // occluders[i], when there is one, answers the shadow rays toward scene.lights[i]
-    // (Accelerator::occluderToward); the accelerator answers the others.
+    // lightQueries[i], when there is one, answers the shadow rays toward scene.lights[i]
+    // (Accelerator::queriesAt); the accelerator answers the others.
     PointLightBatch(const Scene& scene, const TriangleSurfaces& surfaces, const Accelerator& accelerator,
-                    std::span<const std::unique_ptr<PointOccluder>> occluders);
+                    std::span<const std::unique_ptr<PointQueries>> lightQueries);
 
     // radiance[k] is the light leaving hit k back along its ray: the point lights' reflection
     // with hard shadows, or directLighting's answer for a hit the lanes do not take. Shadow
@@ -56,11 +56,11 @@ public:
 private:
     struct Lanes;
     void gather(const HitBatch& hits, Lanes& lanes, Vec3* radiance, TraversalStats& shadowStats) const;
-    void addLight(const PointLight& light, const PointOccluder* occluder, Lanes& lanes, TraversalStats& shadowStats) const;
+    void addLight(const PointLight& light, const PointQueries* queries, Lanes& lanes, TraversalStats& shadowStats) const;
 
     const Scene& scene_;
     const Accelerator& accelerator_;
-    std::span<const std::unique_ptr<PointOccluder>> occluders_;
+    std::span<const std::unique_ptr<PointQueries>> lightQueries_;
     const TriangleSurfaces& surfaces_;
     std::vector<uint8_t> inLanes_;  // per material: reflects and does not emit
     std::vector<Vec3> brdf_;        // per material: albedo / pi

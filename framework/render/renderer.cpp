@@ -67,14 +67,16 @@ class TileRenderer {
 public:
     TileRenderer(const Scene& scene, const Camera& camera, const Accelerator& accelerator,
                  const TriangleSurfaces& surfaces, std::span<const Bounds3f> cullBoxes,
-                 std::span<const std::unique_ptr<PointOccluder>> occluders, const RenderSettings& settings,
+                 const PointQueries* cameraQueries, std::span<const std::unique_ptr<PointQueries>> lightQueries,
+                 const RenderSettings& settings,
                  RenderResult& result)
         : scene_(scene),
           accelerator_(accelerator),
           settings_(settings),
           film_(camera.film(settings.width, settings.height)),
           surfaces_(surfaces),
-          pointLights_(scene, surfaces_, accelerator, occluders),
+          cameraQueries_(cameraQueries),
+          pointLights_(scene, surfaces_, accelerator, lightQueries),
           areaLights_(scene),
           reach_(sceneReach(scene)),
           anyAov_(!settings.aovs.empty()),
@@ -113,7 +115,7 @@ private:
                 makeCentreRays(tile, y, rays);
                 for (int x = tile.x0; x < tile.x1; ++x) {
                     const Ray& ray = rays[x - tile.x0];
-                    Hit hit = accelerator_.intersect(ray, stats.primary);
+                    Hit hit = cameraQueries_ ? cameraQueries_->intersect(ray, stats.primary) : accelerator_.intersect(ray, stats.primary);
                     if (!hit.found()) continue;
                     surfaces_.prefetch(hit.prim);
                     hits.add(x, y, ray, hit);
@@ -194,6 +196,7 @@ private:
     std::vector<DVec3> centreColumns_;  // film_.column of every pixel centre
     std::vector<BoundsCull::Row> cullRows_;  // every image row's, with cullOutsideBounds
     const TriangleSurfaces& surfaces_;
+    const PointQueries* cameraQueries_;  // renderCentres' camera rays, when the accelerator made them
     const PointLightBatch pointLights_;  // renderCentres' common hits
     const AreaLights areaLights_;
     const float reach_;
@@ -206,7 +209,8 @@ private:
 
 Renderer::Renderer(const Scene& scene, const Camera& camera, const Accelerator& accelerator)
     : scene_(scene), camera_(camera), accelerator_(accelerator), surfaces_(scene), cullBoxes_(sceneBoxes(scene)) {
-    for (const PointLight& light : scene.lights) occluders_.push_back(accelerator.occluderToward(light.position));
+    cameraQueries_ = accelerator.queriesAt(camera.film(1, 1).origin);
+    for (const PointLight& light : scene.lights) lightQueries_.push_back(accelerator.queriesAt(light.position));
 }
 
 RenderResult Renderer::render(const RenderSettings& settings) const {
@@ -222,7 +226,7 @@ RenderResult Renderer::render(const RenderSettings& settings) const {
     RenderResult result;
     result.colour = Image(settings.width, settings.height, 3);
     result.aovs = allocateAovs(settings);
-    const TileRenderer renderer(scene_, camera_, accelerator_, surfaces_, cullBoxes_, occluders_, settings, result);
+    const TileRenderer renderer(scene_, camera_, accelerator_, surfaces_, cullBoxes_, cameraQueries_.get(), lightQueries_, settings, result);
 
     std::vector<Tile> tiles = makeTiles(settings.width, settings.height);
     std::vector<TileStats> tileStats(tiles.size());

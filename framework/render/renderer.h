@@ -50,8 +50,8 @@ public:
     // The accelerator must have been built over a PrimitiveSet of this scene. Gathers the
     // triangles' shading records (TriangleSurfaces) once, for every render it makes, as the
     // accelerator is built once before them.
-    // Asks the accelerator for an occluder toward each point light (Accelerator::occluderToward),
-    // once, as it gathers the records.
+    // Asks the accelerator for its queries at the camera's position and at each point light
+    // (Accelerator::queriesAt), once, as it gathers the records.
     Renderer(const Scene& scene, const Camera& camera, const Accelerator& accelerator);
 
     // Throws rtlab::Error for an image size or sample count out of range, and whatever the
@@ -64,7 +64,8 @@ private:
     const Accelerator& accelerator_;
     const TriangleSurfaces surfaces_;
     const std::vector<Bounds3f> cullBoxes_;  // sceneBoxes, for BoundsCull
-    std::vector<std::unique_ptr<PointOccluder>> occluders_;  // per point light; null: none
+    std::unique_ptr<PointQueries> cameraQueries_;              // null: none
+    std::vector<std::unique_ptr<PointQueries>> lightQueries_;  // per point light; null: none
 };
 
 }  // namespace rtlab

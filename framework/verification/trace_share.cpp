@@ -14,14 +14,14 @@ namespace {
 struct Query {
     Ray ray;
     bool anyHit;
-    const PointOccluder* occluder;  // what answered an any-hit query: this, or (null) the accelerator
+    const PointQueries* queries;  // what answered it: these, or (null) the accelerator
 };
 
 class QueryLog {
 public:
-    void record(const Ray& ray, bool anyHit, const PointOccluder* occluder) {
+    void record(const Ray& ray, bool anyHit, const PointQueries* queries) {
         std::lock_guard lock(mutex_);
-        queries_.push_back({ray, anyHit, occluder});
+        queries_.push_back({ray, anyHit, queries});
     }
     std::vector<Query> take() { return std::move(queries_); }
 
@@ -30,22 +30,26 @@ private:
     std::vector<Query> queries_;
 };
 
-// An occluder that answers through the accelerator's own and writes down every query.
-class RecordingOccluder : public PointOccluder {
+// Point queries that answer through the accelerator's own and write down every query.
+class RecordingQueries : public PointQueries {
 public:
-    RecordingOccluder(std::unique_ptr<PointOccluder> inner, QueryLog& log) : inner_(std::move(inner)), log_(log) {}
+    RecordingQueries(std::unique_ptr<PointQueries> inner, QueryLog& log) : inner_(std::move(inner)), log_(log) {}
+    Hit intersect(const Ray& ray, TraversalStats& stats) const override {
+        log_.record(ray, false, inner_.get());
+        return inner_->intersect(ray, stats);
+    }
     bool occluded(const Ray& ray, TraversalStats& stats) const override {
         log_.record(ray, true, inner_.get());
         return inner_->occluded(ray, stats);
     }
 
 private:
-    std::unique_ptr<PointOccluder> inner_;
+    std::unique_ptr<PointQueries> inner_;
     QueryLog& log_;
 };
 
 // An accelerator that answers through a built one and writes down every query, those its
-// occluders answer included.
+// point queries answer included.
 class RecordingAccelerator : public Accelerator {
 public:
     RecordingAccelerator(const Accelerator& inner, QueryLog& log) : inner_(inner), log_(log) {}
@@ -59,10 +63,10 @@ public:
         log_.record(ray, true, nullptr);
         return inner_.occluded(ray, stats);
     }
-    std::unique_ptr<PointOccluder> occluderToward(const Vec3& point) const override {
-        std::unique_ptr<PointOccluder> inner = inner_.occluderToward(point);
+    std::unique_ptr<PointQueries> queriesAt(const Vec3& point) const override {
+        std::unique_ptr<PointQueries> inner = inner_.queriesAt(point);
         if (!inner) return nullptr;
-        return std::make_unique<RecordingOccluder>(std::move(inner), log_);
+        return std::make_unique<RecordingQueries>(std::move(inner), log_);
     }
     StructureView structure() const override { return inner_.structure(); }
     size_t memoryBytes() const override { return inner_.memoryBytes(); }
@@ -81,12 +85,15 @@ double traceSeconds(const Accelerator& accelerator, const std::vector<Query>& qu
     parallelFor(chunks, threads, [&](size_t chunk) {
         size_t end = std::min(queries.size(), (chunk + 1) * kChunk);
         for (size_t i = chunk * kChunk; i < end; ++i) {
-            if (queries[i].occluder)
-                queries[i].occluder->occluded(queries[i].ray, stats[chunk]);
-            else if (queries[i].anyHit)
-                accelerator.occluded(queries[i].ray, stats[chunk]);
+            const Query& query = queries[i];
+            if (query.queries && query.anyHit)
+                query.queries->occluded(query.ray, stats[chunk]);
+            else if (query.queries)
+                query.queries->intersect(query.ray, stats[chunk]);
+            else if (query.anyHit)
+                accelerator.occluded(query.ray, stats[chunk]);
             else
-                accelerator.intersect(queries[i].ray, stats[chunk]);
+                accelerator.intersect(query.ray, stats[chunk]);
         }
     });
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -120,7 +127,7 @@ TraceShare measureTraceShare(const Scene& scene, const Camera& camera, const Acc
     recording.threads = 1;
     QueryLog log;
     RecordingAccelerator recorder(accelerator, log);
-    // Kept: it holds the occluders the queries it recorded are traced with again.
+    // Kept: it holds the point queries the queries it recorded are traced with again.
     const Renderer recordingRenderer(scene, camera, recorder);
     recordingRenderer.render(recording);
     std::vector<Query> queries = log.take();

@@ -70,7 +70,8 @@ TestGroup renderGroup(const ImageConfig& config, std::shared_ptr<ImageJob> job, 
                 render.channels = in.get<int32_t>();
                 if (render.width != job->reference.width || render.height != job->reference.height || render.channels != 3)
                     throw WireError("the render has the wrong size");
-                render.pixels = in.getVector<float>(size_t(render.width) * render.height * 3);
+                std::vector<float> pixels = in.getVector<float>(size_t(render.width) * render.height * 3);
+                render.pixels.assign(pixels.begin(), pixels.end());
                 if (render.pixels.size() != size_t(render.width) * render.height * 3) throw WireError("the render is incomplete");
                 ImageComparison c = compareImages(render, job->reference, kImageThresholdCodes);
                 fs::create_directories(workDir);

@@ -7,6 +7,7 @@
 #include "grader/worker/worker_tasks.h"
 
 #include <algorithm>
+#include <span>
 
 namespace rtlab::grader::worker {
 namespace {
@@ -32,7 +33,7 @@ void runRender(ByteReader& input, ByteWriter& output, WorkerState& state) {
     output.put<int32_t>(result.colour.width);
     output.put<int32_t>(result.colour.height);
     output.put<int32_t>(result.colour.channels);
-    output.putVector(result.colour.pixels);
+    output.putVector(std::span<const float>(result.colour.pixels));
 }
 
 const TaskRegistration registration{{kTaskRender, runRender}};

@@ -1,4 +1,4 @@
-#include "fast/light_buffer.h"
+#include "fast/point_view.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,14 +20,13 @@ double distanceTo(const DVec3& p, const DVec3& lower, const DVec3& upper) {
 }
 
 struct Entry {
-    double reach;  // the triangle's nearest distance to the light
+    double reach;  // the triangle's nearest distance to the point
     uint32_t prim;
 };
 
 }  // namespace
 
-bool LightBuffer::project(const DVec3& p, double& x, double& y) const {
-    DVec3 w = p - DVec3(light_);
+bool PointView::project(const DVec3& w, double& x, double& y) const {
     double along = glm::dot(w, axis_);
     if (!(along > 0.0)) return false;
     x = glm::dot(w, u_) / along;
@@ -35,16 +34,16 @@ bool LightBuffer::project(const DVec3& p, double& x, double& y) const {
     return true;
 }
 
-std::unique_ptr<LightBuffer> LightBuffer::make(const PrimitiveSet& primitives, const Vec3& light, const Accelerator& fallback) {
+std::unique_ptr<PointView> PointView::make(const PrimitiveSet& primitives, const Vec3& point, const Accelerator& fallback) {
     const uint32_t n = primitives.triangleCount();
     if (n == 0 || n != primitives.size()) return nullptr;
-    std::unique_ptr<LightBuffer> buffer(new LightBuffer(light, fallback));
-    LightBuffer& b = *buffer;
+    std::unique_ptr<PointView> buffer(new PointView(point, fallback));
+    PointView& b = *buffer;
 
     Bounds3f bounds;
     for (uint32_t prim = 0; prim < n; ++prim)
         for (const Vec3& vertex : primitives.triangle(prim)) bounds.extend(vertex);
-    const DVec3 origin(light);
+    const DVec3 origin(point);
     DVec3 towards = DVec3(bounds.centre()) - origin;
     double length = glm::length(towards);
     if (!(length > 0.0) || !std::isfinite(length)) return nullptr;
@@ -81,7 +80,7 @@ std::unique_ptr<LightBuffer> LightBuffer::make(const PrimitiveSet& primitives, c
         Rect rect{kInfinity, kInfinity, -kInfinity, -kInfinity, 0.0};
         for (const Vec3& vertex : triangle) {
             double x = 0.0, y = 0.0;
-            if (!b.project(DVec3(vertex), x, y)) return nullptr;
+            if (!b.project(DVec3(vertex) - origin, x, y)) return nullptr;
             rect.x0 = std::min(rect.x0, x);
             rect.y0 = std::min(rect.y0, y);
             rect.x1 = std::max(rect.x1, x);
@@ -111,6 +110,7 @@ std::unique_ptr<LightBuffer> LightBuffer::make(const PrimitiveSet& primitives, c
         b.columns_ = std::clamp(int(std::ceil(width / b.cellSize_)), 1, 4096);
         b.rows_ = std::clamp(int(std::ceil(height / b.cellSize_)), 1, 4096);
         b.cellSize_ = std::max(width / b.columns_, height / b.rows_);
+        b.inverseCellSize_ = 1.0 / b.cellSize_;
         size_t entries = 0;
         for (const Rect& rect : rects)
             entries += size_t(b.cellOf(rect.x1, b.gridX_, b.columns_) - b.cellOf(rect.x0, b.gridX_, b.columns_) + 1) *
@@ -161,24 +161,59 @@ std::unique_ptr<LightBuffer> LightBuffer::make(const PrimitiveSet& primitives, c
     return buffer;
 }
 
-int LightBuffer::cellOf(double value, double gridStart, int cells) const {
-    return std::clamp(int(std::floor((value - gridStart) / cellSize_)), 0, cells - 1);
+// The build places a triangle's rectangle and a query its direction by the same arithmetic,
+// (coordinate - grid corner) * (1 / cell side), which never decreases as the coordinate grows:
+// a direction inside a rectangle lands in one of the rectangle's cells.
+int PointView::cellOf(double value, double gridStart, int cells) const {
+    return std::clamp(int(std::floor((value - gridStart) * inverseCellSize_)), 0, cells - 1);
 }
 
-bool LightBuffer::occluded(const Ray& ray, TraversalStats& stats) const {
+long PointView::cellAt(double x, double y) const {
+    const double cx = (x - gridX_) * inverseCellSize_, cy = (y - gridY_) * inverseCellSize_;
+    // Before the grid's corner no triangle's widened rectangle holds the direction, nor well
+    // beyond its far sides; at the far sides a rounded product may exceed the cell count a
+    // little, and clamps to the last cell.
+    if (!(cx >= 0.0 && cy >= 0.0 && cx <= columns_ + 0.5 && cy <= rows_ + 0.5)) return -1;
+    return long(std::min(int(cy), rows_ - 1)) * columns_ + std::min(int(cx), columns_ - 1);
+}
+
+Hit PointView::intersect(const Ray& ray, TraversalStats& stats) const {
     double x = 0.0, y = 0.0;
-    if (!(ray.tMin >= 0.0f && ray.tMax <= 1.0f) || ray.direction != light_ - ray.origin ||
-        !project(DVec3(ray.origin), x, y))
+    if (!(ray.tMin >= 0.0f) || ray.origin != point_ || !project(DVec3(ray.direction), x, y))
+        return fallback_.intersect(ray, stats);
+    ++stats.rays;
+    Hit hit;
+    hit.t = ray.tMax;
+    if (long cell = cellAt(x, y); cell >= 0) {
+        ++stats.nodeVisits;  // the cell
+        const ShearedRay sheared(ray);
+        const double length = glm::length(DVec3(ray.direction));
+        // A hit at t lies t |direction| from the point, give or take the slack: a packet whose
+        // nearest triangle is farther than the nearest hit so far holds no nearer one.
+        for (uint32_t p = cellStart_[cell]; p < cellStart_[cell + 1]; ++p) {
+            if (hit.found() && packetReach_[p] > double(hit.t) * length + slack_) break;
+            stats.primitiveTests += TrianglePacket::kLanes;
+            const TrianglePacket& packet = packets_[p];
+            if (PacketHit nearest = sheared.closest(packet, hit.t); nearest.lane >= 0)
+                hit = Hit{nearest.hit.t, packet.prim[nearest.lane], nearest.hit.b1, nearest.hit.b2};
+        }
+    }
+    if (!hit.found()) hit.t = kInfinity;
+    return hit;
+}
+
+bool PointView::occluded(const Ray& ray, TraversalStats& stats) const {
+    double x = 0.0, y = 0.0;
+    if (!(ray.tMin >= 0.0f && ray.tMax <= 1.0f) || ray.direction != point_ - ray.origin ||
+        !project(DVec3(ray.origin) - DVec3(point_), x, y))
         return fallback_.occluded(ray, stats);
     ++stats.rays;
-    // Outside the grid no triangle's widened rectangle holds the origin's direction: nothing
-    // lies between it and the light.
-    if (x < gridX_ || y < gridY_ || x > gridX_ + columns_ * cellSize_ || y > gridY_ + rows_ * cellSize_) return false;
+    const long cell = cellAt(x, y);
+    if (cell < 0) return false;
     ++stats.nodeVisits;  // the cell
-    const size_t cell = size_t(cellOf(y, gridY_, rows_)) * columns_ + cellOf(x, gridX_, columns_);
-    // A triangle farther from the light than the origin (by more than the rounding slack) is
-    // behind the whole segment.
-    const double limit = glm::length(DVec3(ray.origin) - DVec3(light_)) + slack_;
+    // A triangle farther from the point than the origin (by more than the slack) is behind the
+    // whole segment.
+    const double limit = glm::length(DVec3(ray.origin) - DVec3(point_)) + slack_;
     const ShearedRay sheared(ray);
     for (uint32_t p = cellStart_[cell]; p < cellStart_[cell + 1] && packetReach_[p] <= limit; ++p) {
         stats.primitiveTests += TrianglePacket::kLanes;
@@ -187,7 +222,7 @@ bool LightBuffer::occluded(const Ray& ray, TraversalStats& stats) const {
     return false;
 }
 
-size_t LightBuffer::memoryBytes() const {
+size_t PointView::memoryBytes() const {
     return cellStart_.size() * sizeof(uint32_t) + packets_.size() * (sizeof(TrianglePacket) + sizeof(float));
 }
 

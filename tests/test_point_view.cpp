@@ -4,7 +4,7 @@
 // and edges (where shared edges leak), and from anywhere; rays not aimed at the light go to the
 // BVH; it declines what it cannot be sure of; and a render through it is the textbook BVH's
 // image to the bit.
-#include "fast/light_buffer.h"
+#include "fast/point_view.h"
 #include "framework/accel/accelerator.h"
 #include "framework/core/pcg32.h"
 #include "framework/render/renderer.h"
@@ -53,7 +53,7 @@ struct Tally {
 
 }  // namespace
 
-TEST_CASE("light buffer: every shadow ray answered as the wide BVH answers it") {
+TEST_CASE("point view: every shadow ray answered as the wide BVH answers it") {
     for (std::string file : {"bunny.gltf", "engine.glb"}) {
         CAPTURE(file);
         Scene scene = loadFetchedModel(file.c_str());
@@ -65,7 +65,7 @@ TEST_CASE("light buffer: every shadow ray answered as the wide BVH answers it") 
         int made = 0;
         for (const Vec3& light : lightsAround(bounds)) {
             CAPTURE(light);
-            std::unique_ptr<PointOccluder> buffer = fast->occluderToward(light);
+            std::unique_ptr<PointQueries> buffer = fast->queriesAt(light);
             if (!buffer) continue;  // a light too near a triangle, or beside the bounds
             ++made;
             TraversalStats stats;
@@ -135,13 +135,13 @@ TEST_CASE("light buffer: every shadow ray answered as the wide BVH answers it") 
     }
 }
 
-TEST_CASE("light buffer: rays not aimed at its light are the BVH's, and it declines what it cannot be sure of") {
+TEST_CASE("point view: rays not aimed at its light are the BVH's, and it declines what it cannot be sure of") {
     Scene scene = loadFetchedModel("bunny.gltf");
     PrimitiveSet prims(scene);
     const Bounds3f bounds = scene.bounds();
     auto fast = built("fastbvh", prims);
     const Vec3 light = bounds.centre() + 3.0f * bounds.diagonal();
-    std::unique_ptr<PointOccluder> buffer = fast->occluderToward(light);
+    std::unique_ptr<PointQueries> buffer = fast->queriesAt(light);
     REQUIRE(buffer);
     TraversalStats stats;
     int disagree = 0;
@@ -152,27 +152,27 @@ TEST_CASE("light buffer: rays not aimed at its light are the BVH's, and it decli
     }
     CHECK(disagree == 0);
 
-    CHECK_FALSE(fast->occluderToward(bounds.centre()));  // inside the bounds
-    CHECK_FALSE(fast->occluderToward(prims.triangle(0)[0]));  // on a triangle
+    CHECK_FALSE(fast->queriesAt(bounds.centre()));  // inside the bounds
+    CHECK_FALSE(fast->queriesAt(prims.triangle(0)[0]));  // on a triangle
     // Beside the bounds: the scene fills more than a cone of 78 degrees around the light.
-    CHECK_FALSE(fast->occluderToward(Vec3(bounds.upper.x + 0.01f * bounds.diagonal().x, bounds.centre().y, bounds.centre().z)));
+    CHECK_FALSE(fast->queriesAt(Vec3(bounds.upper.x + 0.01f * bounds.diagonal().x, bounds.centre().y, bounds.centre().z)));
     // A sphere among the primitives.
     Scene withSphere = scene;
     withSphere.spheres.push_back(Sphere{bounds.centre(), 0.01f, 0});
     PrimitiveSet spherePrims(withSphere);
-    CHECK_FALSE(built("fastbvh", spherePrims)->occluderToward(light));
+    CHECK_FALSE(built("fastbvh", spherePrims)->queriesAt(light));
     // The textbook structures make none.
-    CHECK_FALSE(built("bvh-buckets", prims)->occluderToward(light));
+    CHECK_FALSE(built("bvh-buckets", prims)->queriesAt(light));
 }
 
-TEST_CASE("light buffer: a render through it is the textbook BVH's image to the bit") {
+TEST_CASE("point view: a render through it is the textbook BVH's image to the bit") {
     Scene scene = loadFetchedModel("bunny.gltf");
     PrimitiveSet prims(scene);
     auto fast = built("fastbvh", prims);
     auto textbook = built("bvh-buckets", prims);
     const Camera camera = scene.cameras.empty() ? BenchmarkView(scene.bounds()).camera() : scene.cameras.front();
     REQUIRE_FALSE(scene.lights.empty());
-    for (const PointLight& light : scene.lights) CHECK(fast->occluderToward(light.position));
+    for (const PointLight& light : scene.lights) CHECK(fast->queriesAt(light.position));
     RenderSettings settings;
     settings.width = settings.height = 160;
     settings.threads = 2;
