@@ -135,6 +135,52 @@ TEST_CASE("point view: every shadow ray answered as the wide BVH answers it") {
     }
 }
 
+TEST_CASE("point view: every ray from the point hits what the wide BVH's ray hits") {
+    for (std::string file : {"bunny.gltf", "engine.glb"}) {
+        CAPTURE(file);
+        Scene scene = loadFetchedModel(file.c_str());
+        PrimitiveSet prims(scene);
+        const Bounds3f bounds = scene.bounds();
+        auto fast = built("fastbvh", prims);
+        Pcg32 rng(8, 2);
+        int made = 0;
+        for (const Vec3& eye : lightsAround(bounds)) {
+            CAPTURE(eye);
+            std::unique_ptr<PointQueries> view = fast->queriesAt(eye);
+            if (!view) continue;
+            ++made;
+            TraversalStats stats;
+            int rays = 0, hits = 0, differ = 0, nearer = 0;
+            for (int i = 0; i < 6000; ++i) {
+                // Toward any point of the bounds, or through a triangle's corner or edge; the
+                // direction of any length, some segments cut short.
+                const auto& triangle = prims.triangle(uint32_t(rng.uniform() * prims.triangleCount()) % prims.triangleCount());
+                float s = rng.uniform();
+                Vec3 anywhere = bounds.lower + Vec3(rng.uniform(), rng.uniform(), rng.uniform()) * bounds.diagonal();
+                Vec3 target = i % 2 ? (1.0f - s) * triangle[i % 3] + s * triangle[(i + 1) % 3] : anywhere;
+                Ray ray;
+                ray.origin = eye;
+                ray.direction = (0.05f + 20.0f * rng.uniform()) * glm::normalize(target - eye);
+                if (i % 5 == 0) ray.tMax = rng.uniform() * glm::length(target - eye) / glm::length(ray.direction);
+                Hit ours = view->intersect(ray, stats), bvh = fast->intersect(ray, stats);
+                ++rays;
+                hits += bvh.found();
+                // The same distance (of equally near triangles perhaps another one), or a hit a
+                // few ulps nearer: the BVH prunes a box whose near distance a0's slab test
+                // rounds up past a hit an ulp nearer than the one it has, and the view, which
+                // tests every triangle in its cell, finds that one.
+                if (ours.found() && bvh.found() && ours.t < bvh.t && bvh.t - ours.t <= 1e-6f * bvh.t) ++nearer;
+                else differ += ours.found() != bvh.found() || ours.t != bvh.t;
+            }
+            CHECK(differ == 0);
+            CHECK(nearer <= rays / 1000);
+            CHECK(hits > rays / 10);
+            CHECK(hits < rays);
+        }
+        CHECK(made >= 16);
+    }
+}
+
 TEST_CASE("point view: rays not aimed at its light are the BVH's, and it declines what it cannot be sure of") {
     Scene scene = loadFetchedModel("bunny.gltf");
     PrimitiveSet prims(scene);
