@@ -8,6 +8,7 @@
 #include "framework/accel/accelerator_registry.h"
 #include "framework/core/pcg32.h"
 #include "framework/scene/benchmark_rays.h"
+#include "tests/built_accelerator.h"
 #include "tests/fetched_models.h"
 
 #include <doctest/doctest.h>
@@ -19,13 +20,7 @@ using namespace rtlab;
 
 namespace {
 
-std::unique_ptr<Accelerator> built(const std::string& name, const PrimitiveSet& prims) {
-    AcceleratorSpec spec;
-    spec.name = name;
-    auto accel = makeAccelerator(spec);
-    accel->build(prims);
-    return accel;
-}
+std::unique_ptr<Accelerator> built(const std::string& name, const PrimitiveSet& prims) { return builtAccelerator({name}, prims); }
 
 // Leaves and the packets of four their triangles fill.
 struct LeafCount {

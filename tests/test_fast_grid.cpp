@@ -9,6 +9,7 @@
 #include "framework/scene/benchmark_rays.h"
 #include "framework/scene/benchmark_scenes.h"
 #include "grader/kit/test_scenes.h"
+#include "tests/built_accelerator.h"
 #include "tests/fetched_models.h"
 
 #include <doctest/doctest.h>
@@ -50,11 +51,7 @@ void checkSameCells(const Scene& scene, const GridOptions& options) {
 }
 
 std::unique_ptr<Accelerator> built(const std::string& name, const PrimitiveSet& primitives) {
-    AcceleratorSpec spec;
-    spec.name = name;
-    auto accelerator = makeAccelerator(spec);
-    accelerator->build(primitives);
-    return accelerator;
+    return builtAccelerator({name}, primitives);
 }
 
 // Closest hits and their work, ray by ray, against the textbook grid over the same cells.

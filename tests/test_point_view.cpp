@@ -1,15 +1,17 @@
-// The light buffer (fast/light_buffer.h): every shadow ray it is asked answered as the wide
-// BVH answers it, on the bunny and the engine, for lights on every side and at several
-// distances, from surface points offset as the renderer offsets them, from triangles' corners
-// and edges (where shared edges leak), and from anywhere; rays not aimed at the light go to the
-// BVH; it declines what it cannot be sure of; and a render through it is the textbook BVH's
-// image to the bit.
+// The scene seen from a point (fast/point_view.h), against the wide BVH, on the bunny and the
+// engine from 24 points on every side and at several distances: every shadow ray toward the
+// point answered the same, from surface points offset as the renderer offsets them, from
+// triangles' corners and edges (where shared edges leak), from anywhere and from far beyond the
+// scene; every ray from the point finding the same hit; rays of other kinds go to the BVH; it
+// declines what it cannot be sure of; and a render through it is the textbook BVH's image to
+// the bit.
 #include "fast/point_view.h"
 #include "framework/accel/accelerator.h"
 #include "framework/core/pcg32.h"
 #include "framework/render/renderer.h"
 #include "framework/render/spawn_ray.h"
 #include "framework/scene/benchmark_rays.h"
+#include "tests/built_accelerator.h"
 #include "tests/fetched_models.h"
 
 #include <doctest/doctest.h>
@@ -22,17 +24,11 @@ using namespace rtlab;
 
 namespace {
 
-std::unique_ptr<Accelerator> built(const std::string& name, const PrimitiveSet& prims) {
-    AcceleratorSpec spec;
-    spec.name = name;
-    auto accel = makeAccelerator(spec);
-    accel->build(prims);
-    return accel;
-}
+std::unique_ptr<Accelerator> built(const std::string& name, const PrimitiveSet& prims) { return builtAccelerator({name}, prims); }
 
-// Lights around the bounds: along each axis both ways and along diagonals, from just beyond
+// Points around the bounds: along each axis both ways and along diagonals, from just beyond
 // the bounds to far away.
-std::vector<Vec3> lightsAround(const Bounds3f& bounds) {
+std::vector<Vec3> pointsAround(const Bounds3f& bounds) {
     std::vector<Vec3> lights;
     const Vec3 centre = bounds.centre();
     const float size = glm::length(bounds.diagonal());
@@ -42,84 +38,110 @@ std::vector<Vec3> lightsAround(const Bounds3f& bounds) {
     return lights;
 }
 
+// A point on an edge of a random triangle, s of the way from its corner i % 3 to the next.
+Vec3 edgePoint(const PrimitiveSet& prims, Pcg32& rng, int i, float s) {
+    const auto& triangle = prims.triangle(uint32_t(rng.uniform() * prims.triangleCount()) % prims.triangleCount());
+    return (1.0f - s) * triangle[i % 3] + s * triangle[(i + 1) % 3];
+}
+
+Vec3 pointIn(const Bounds3f& bounds, Pcg32& rng) {
+    return bounds.lower + Vec3(rng.uniform(), rng.uniform(), rng.uniform()) * bounds.diagonal();
+}
+
+// Half through an edge point of a triangle, half through any point of the bounds.
+Vec3 edgeOrAnywhere(const PrimitiveSet& prims, const Bounds3f& bounds, Pcg32& rng, int i) {
+    float s = rng.uniform();
+    Vec3 anywhere = pointIn(bounds, rng);
+    return i % 2 ? edgePoint(prims, rng, i, s) : anywhere;
+}
+
+// The segment from origin toward the point, as the renderer's shadow rays are made.
+Ray toward(const Vec3& point, const Vec3& origin, float tMin = kShadowEpsilon, float tMax = 1.0f - kShadowEpsilon) {
+    Ray ray;
+    ray.origin = origin;
+    ray.direction = point - origin;
+    ray.tMin = tMin;
+    ray.tMax = tMax;
+    return ray;
+}
+
 struct Tally {
     int rays = 0, blocked = 0, disagree = 0;
-    void add(bool buffer, bool bvh) {
+    void add(bool view, bool bvh) {
         ++rays;
         blocked += bvh;
-        disagree += buffer != bvh;
+        disagree += view != bvh;
     }
 };
 
 }  // namespace
 
+// The fast BVH over a fetched model.
+struct Model {
+    Scene scene;
+    PrimitiveSet prims;
+    Bounds3f bounds;
+    std::unique_ptr<Accelerator> fast;
+
+    explicit Model(const char* file)
+        : scene(loadFetchedModel(file)), prims(scene), bounds(scene.bounds()), fast(built("fastbvh", prims)) {}
+};
+
+// Calls check(point, view) for every point around the model (pointsAround) that gets a view:
+// at least 16 of the 24 must (the others are too near a triangle, or beside the bounds).
+template <typename Check>
+void eachView(const Model& model, Check&& check) {
+    int made = 0;
+    for (const Vec3& point : pointsAround(model.bounds)) {
+        CAPTURE(point);
+        std::unique_ptr<PointQueries> view = model.fast->queriesAt(point);
+        if (!view) continue;
+        ++made;
+        check(point, *view);
+    }
+    CHECK(made >= 16);
+}
+
 TEST_CASE("point view: every shadow ray answered as the wide BVH answers it") {
-    for (std::string file : {"bunny.gltf", "engine.glb"}) {
+    for (const char* file : {"bunny.gltf", "engine.glb"}) {
         CAPTURE(file);
-        Scene scene = loadFetchedModel(file.c_str());
-        PrimitiveSet prims(scene);
-        const Bounds3f bounds = scene.bounds();
-        auto fast = built("fastbvh", prims);
+        const Model model(file);
+        const PrimitiveSet& prims = model.prims;
+        const Bounds3f& bounds = model.bounds;
+        const Accelerator& fast = *model.fast;
         std::vector<Ray> cameraRays = makeBenchmarkRays(RayKind::Primary, bounds);
         Pcg32 rng(3, 4);
-        int made = 0;
-        for (const Vec3& light : lightsAround(bounds)) {
-            CAPTURE(light);
-            std::unique_ptr<PointQueries> buffer = fast->queriesAt(light);
-            if (!buffer) continue;  // a light too near a triangle, or beside the bounds
-            ++made;
+        eachView(model, [&](const Vec3& light, const PointQueries& view) {
             TraversalStats stats;
             Tally fromSurfaces, fromCorners, fromAnywhere, fromBeyond;
             // The renderer's shadow rays: from hit points, offset off the surface.
             for (size_t i = 0; i < cameraRays.size(); i += 97) {
-                Hit hit = fast->intersect(cameraRays[i], stats);
+                Hit hit = fast.intersect(cameraRays[i], stats);
                 if (!hit.found()) continue;
-                SurfaceHit surface = scene.surfaceAt(cameraRays[i], hit);
+                SurfaceHit surface = model.scene.surfaceAt(cameraRays[i], hit);
                 Ray ray = spawnShadowRay(surface.point, surface.pointError, surface.geometricNormal, light);
-                fromSurfaces.add(buffer->occluded(ray, stats), fast->occluded(ray, stats));
+                fromSurfaces.add(view.occluded(ray, stats), fast.occluded(ray, stats));
             }
             // From corners and edge points of triangles, not offset: rays that graze their own
             // triangle and its neighbours, through shared edges.
             for (int i = 0; i < 3000; ++i) {
-                const auto& triangle = prims.triangle(uint32_t(rng.uniform() * prims.triangleCount()) % prims.triangleCount());
-                float s = rng.uniform() < 0.5f ? 0.0f : rng.uniform();
-                Vec3 origin = (1.0f - s) * triangle[i % 3] + s * triangle[(i + 1) % 3];
-                Ray ray;
-                ray.origin = origin;
-                ray.direction = light - origin;
-                ray.tMin = kShadowEpsilon;
-                ray.tMax = 1.0f - kShadowEpsilon;
-                fromCorners.add(buffer->occluded(ray, stats), fast->occluded(ray, stats));
-                ray.tMin = 0.0f;
-                ray.tMax = 1.0f;
-                fromCorners.add(buffer->occluded(ray, stats), fast->occluded(ray, stats));
+                Vec3 origin = edgePoint(prims, rng, i, rng.uniform() < 0.5f ? 0.0f : rng.uniform());
+                for (Ray ray : {toward(light, origin), toward(light, origin, 0.0f, 1.0f)})
+                    fromCorners.add(view.occluded(ray, stats), fast.occluded(ray, stats));
             }
             // From anywhere in and around the bounds.
             for (int i = 0; i < 3000; ++i) {
                 Vec3 t(rng.uniform(), rng.uniform(), rng.uniform());
-                Vec3 origin = bounds.lower - 0.1f * bounds.diagonal() + 1.2f * t * bounds.diagonal();
-                Ray ray;
-                ray.origin = origin;
-                ray.direction = light - origin;
-                ray.tMin = kShadowEpsilon;
-                ray.tMax = 1.0f - kShadowEpsilon;
-                fromAnywhere.add(buffer->occluded(ray, stats), fast->occluded(ray, stats));
+                Ray ray = toward(light, bounds.lower - 0.1f * bounds.diagonal() + 1.2f * t * bounds.diagonal());
+                fromAnywhere.add(view.occluded(ray, stats), fast.occluded(ray, stats));
             }
             // From far beyond the scene, through it toward the light: the rounding of these rays'
             // directions moves them by a sizeable part of a cell near the light, which the
             // margins must cover.
             for (int i = 0; i < 3000; ++i) {
-                // Half through an edge point of a triangle, half through any point of the bounds.
-                const auto& triangle = prims.triangle(uint32_t(rng.uniform() * prims.triangleCount()) % prims.triangleCount());
-                float s = rng.uniform();
-                Vec3 anywhere = bounds.lower + Vec3(rng.uniform(), rng.uniform(), rng.uniform()) * bounds.diagonal();
-                Vec3 target = i % 2 ? (1.0f - s) * triangle[i % 3] + s * triangle[(i + 1) % 3] : anywhere;
-                Ray ray;
-                ray.origin = light + (50.0f + 2000.0f * rng.uniform()) * (target - light);
-                ray.direction = light - ray.origin;
-                ray.tMin = 0.0f;
-                ray.tMax = 1.0f;
-                fromBeyond.add(buffer->occluded(ray, stats), fast->occluded(ray, stats));
+                Vec3 target = edgeOrAnywhere(prims, bounds, rng, i);
+                Ray ray = toward(light, light + (50.0f + 2000.0f * rng.uniform()) * (target - light), 0.0f, 1.0f);
+                fromBeyond.add(view.occluded(ray, stats), fast.occluded(ray, stats));
             }
             CHECK(fromSurfaces.disagree == 0);
             CHECK(fromCorners.disagree == 0);
@@ -130,39 +152,30 @@ TEST_CASE("point view: every shadow ray answered as the wide BVH answers it") {
                 CHECK(tally->blocked > 0);
                 CHECK(tally->blocked < tally->rays);
             }
-        }
-        CHECK(made >= 16);  // of the 24 lights
+        });
     }
 }
 
 TEST_CASE("point view: every ray from the point hits what the wide BVH's ray hits") {
-    for (std::string file : {"bunny.gltf", "engine.glb"}) {
+    for (const char* file : {"bunny.gltf", "engine.glb"}) {
         CAPTURE(file);
-        Scene scene = loadFetchedModel(file.c_str());
-        PrimitiveSet prims(scene);
-        const Bounds3f bounds = scene.bounds();
-        auto fast = built("fastbvh", prims);
+        const Model model(file);
+        const PrimitiveSet& prims = model.prims;
+        const Bounds3f& bounds = model.bounds;
+        const Accelerator& fast = *model.fast;
         Pcg32 rng(8, 2);
-        int made = 0;
-        for (const Vec3& eye : lightsAround(bounds)) {
-            CAPTURE(eye);
-            std::unique_ptr<PointQueries> view = fast->queriesAt(eye);
-            if (!view) continue;
-            ++made;
+        eachView(model, [&](const Vec3& eye, const PointQueries& view) {
             TraversalStats stats;
             int rays = 0, hits = 0, differ = 0, nearer = 0;
             for (int i = 0; i < 6000; ++i) {
-                // Toward any point of the bounds, or through a triangle's corner or edge; the
-                // direction of any length, some segments cut short.
-                const auto& triangle = prims.triangle(uint32_t(rng.uniform() * prims.triangleCount()) % prims.triangleCount());
-                float s = rng.uniform();
-                Vec3 anywhere = bounds.lower + Vec3(rng.uniform(), rng.uniform(), rng.uniform()) * bounds.diagonal();
-                Vec3 target = i % 2 ? (1.0f - s) * triangle[i % 3] + s * triangle[(i + 1) % 3] : anywhere;
+                // Toward any point of the bounds, or through a triangle's edge; the direction of
+                // any length, some segments cut short.
+                Vec3 target = edgeOrAnywhere(prims, bounds, rng, i);
                 Ray ray;
                 ray.origin = eye;
                 ray.direction = (0.05f + 20.0f * rng.uniform()) * glm::normalize(target - eye);
                 if (i % 5 == 0) ray.tMax = rng.uniform() * glm::length(target - eye) / glm::length(ray.direction);
-                Hit ours = view->intersect(ray, stats), bvh = fast->intersect(ray, stats);
+                Hit ours = view.intersect(ray, stats), bvh = fast.intersect(ray, stats);
                 ++rays;
                 hits += bvh.found();
                 // The same distance (of equally near triangles perhaps another one), or a hit a
@@ -176,25 +189,26 @@ TEST_CASE("point view: every ray from the point hits what the wide BVH's ray hit
             CHECK(nearer <= rays / 1000);
             CHECK(hits > rays / 10);
             CHECK(hits < rays);
-        }
-        CHECK(made >= 16);
+        });
     }
 }
 
-TEST_CASE("point view: rays not aimed at its light are the BVH's, and it declines what it cannot be sure of") {
+TEST_CASE("point view: rays neither from nor toward its point are the BVH's, and it declines what it cannot be sure of") {
     Scene scene = loadFetchedModel("bunny.gltf");
     PrimitiveSet prims(scene);
     const Bounds3f bounds = scene.bounds();
     auto fast = built("fastbvh", prims);
     const Vec3 light = bounds.centre() + 3.0f * bounds.diagonal();
-    std::unique_ptr<PointQueries> buffer = fast->queriesAt(light);
-    REQUIRE(buffer);
+    std::unique_ptr<PointQueries> view = fast->queriesAt(light);
+    REQUIRE(view);
     TraversalStats stats;
     int disagree = 0;
     for (const Ray& ray : makeBenchmarkRays(RayKind::Incoherent, bounds)) {
         Ray segment = ray;
         segment.tMax = 0.5f * glm::length(bounds.diagonal());
-        disagree += buffer->occluded(segment, stats) != fast->occluded(segment, stats);
+        disagree += view->occluded(segment, stats) != fast->occluded(segment, stats);
+        Hit ours = view->intersect(segment, stats), bvh = fast->intersect(segment, stats);
+        disagree += ours.t != bvh.t || ours.prim != bvh.prim;
     }
     CHECK(disagree == 0);
 

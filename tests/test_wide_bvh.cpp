@@ -5,6 +5,7 @@
 #include "framework/accel/accelerator.h"
 #include "framework/accel/bvh_accelerator.h"
 #include "framework/scene/benchmark_rays.h"
+#include "tests/built_accelerator.h"
 #include "tests/fetched_models.h"
 
 #include <doctest/doctest.h>
@@ -22,9 +23,7 @@ namespace {
 std::unique_ptr<Accelerator> built(const std::string& name, const PrimitiveSet& prims, int maxLeaf = 4) {
     AcceleratorSpec spec{name};
     setMaxLeaf(spec, maxLeaf);
-    auto accel = makeAccelerator(spec);
-    accel->build(prims);
-    return accel;
+    return builtAccelerator(spec, prims);
 }
 
 }  // namespace
