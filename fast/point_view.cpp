@@ -37,50 +37,53 @@ bool PointView::project(const DVec3& w, double& x, double& y) const {
 std::unique_ptr<PointView> PointView::make(const PrimitiveSet& primitives, const Vec3& point, const Accelerator& fallback) {
     const uint32_t n = primitives.triangleCount();
     if (n == 0 || n != primitives.size()) return nullptr;
-    std::unique_ptr<PointView> buffer(new PointView(point, fallback));
-    PointView& b = *buffer;
-
+    std::unique_ptr<PointView> view(new PointView(point, fallback));
     Bounds3f bounds;
     for (uint32_t prim = 0; prim < n; ++prim)
         for (const Vec3& vertex : primitives.triangle(prim)) bounds.extend(vertex);
-    const DVec3 origin(point);
+    double minCosine = 0.0, reach = 0.0;
+    if (!view->frameBounds(bounds, minCosine, reach)) return nullptr;
+    // A change of direction by an angle a moves a projected point by up to a / cos^2 of its
+    // angle to the axis; twice that, for the directions a margin away from the cone's.
+    std::vector<Rect> rects;
+    if (!view->rectangles(primitives, 2.0 / (minCosine * minCosine), reach, rects)) return nullptr;
+    view->sizeGrid(rects);
+    view->fillCells(primitives, rects);
+    return view;
+}
+
+bool PointView::frameBounds(const Bounds3f& bounds, double& minCosine, double& reach) {
+    const DVec3 origin(point_);
     DVec3 towards = DVec3(bounds.centre()) - origin;
     double length = glm::length(towards);
-    if (!(length > 0.0) || !std::isfinite(length)) return nullptr;
-    b.axis_ = towards / length;
-    DVec3 helper = std::abs(b.axis_.x) < 0.9 ? DVec3(1.0, 0.0, 0.0) : DVec3(0.0, 1.0, 0.0);
-    b.u_ = glm::normalize(glm::cross(b.axis_, helper));
-    b.v_ = glm::cross(b.axis_, b.u_);
-
-    // The cone: every corner in front, within kMinCosine of the axis; the reach.
-    double minCosine = 1.0, reach = 0.0;
+    if (!(length > 0.0) || !std::isfinite(length)) return false;
+    axis_ = towards / length;
+    DVec3 helper = std::abs(axis_.x) < 0.9 ? DVec3(1.0, 0.0, 0.0) : DVec3(0.0, 1.0, 0.0);
+    u_ = glm::normalize(glm::cross(axis_, helper));
+    v_ = glm::cross(axis_, u_);
+    minCosine = 1.0;
+    reach = 0.0;
     for (int i = 0; i < 8; ++i) {
         DVec3 corner(bounds[i & 1].x, bounds[(i >> 1) & 1].y, bounds[(i >> 2) & 1].z);
         DVec3 w = corner - origin;
         double distance = glm::length(w);
-        if (!(distance > 0.0) || !std::isfinite(distance)) return nullptr;
-        minCosine = std::min(minCosine, glm::dot(w, b.axis_) / distance);
+        if (!(distance > 0.0) || !std::isfinite(distance)) return false;
+        minCosine = std::min(minCosine, glm::dot(w, axis_) / distance);
         reach = std::max(reach, distance);
     }
-    if (!(minCosine > kMinCosine)) return nullptr;
-    b.slack_ = kMarginFactor * kUnitRoundoff * reach;
-    // A change of direction by an angle a moves a projected point by up to a / cos^2 of its
-    // angle to the axis; twice that, for the directions a margin away from the cone's.
-    const double planeScale = 2.0 / (minCosine * minCosine);
+    slack_ = kMarginFactor * kUnitRoundoff * reach;
+    return minCosine > kMinCosine;
+}
 
-    // Each triangle's rectangle on the plane, widened by its margin.
-    struct Rect {
-        double x0, y0, x1, y1, reach;
-    };
-    std::vector<Rect> rects(n);
-    double gridX0 = kInfinity, gridY0 = kInfinity, gridX1 = -kInfinity, gridY1 = -kInfinity;
-    for (uint32_t prim = 0; prim < n; ++prim) {
-        const auto& triangle = primitives.triangle(prim);
+bool PointView::rectangles(const PrimitiveSet& primitives, double planeScale, double reach, std::vector<Rect>& rects) const {
+    const DVec3 origin(point_);
+    rects.resize(primitives.triangleCount());
+    for (uint32_t prim = 0; prim < primitives.triangleCount(); ++prim) {
         DVec3 lower(kInfinity), upper(-kInfinity);
         Rect rect{kInfinity, kInfinity, -kInfinity, -kInfinity, 0.0};
-        for (const Vec3& vertex : triangle) {
+        for (const Vec3& vertex : primitives.triangle(prim)) {
             double x = 0.0, y = 0.0;
-            if (!b.project(DVec3(vertex) - origin, x, y)) return nullptr;
+            if (!project(DVec3(vertex) - origin, x, y)) return false;
             rect.x0 = std::min(rect.x0, x);
             rect.y0 = std::min(rect.y0, y);
             rect.x1 = std::max(rect.x1, x);
@@ -89,76 +92,87 @@ std::unique_ptr<PointView> PointView::make(const PrimitiveSet& primitives, const
             upper = glm::max(upper, DVec3(vertex));
         }
         rect.reach = distanceTo(origin, lower, upper);
-        if (!(rect.reach >= kMinNearness * reach)) return nullptr;
+        if (!(rect.reach >= kMinNearness * reach)) return false;
         double margin = planeScale * kMarginFactor * kUnitRoundoff * reach / rect.reach;
-        rect = {rect.x0 - margin, rect.y0 - margin, rect.x1 + margin, rect.y1 + margin, rect.reach};
-        rects[prim] = rect;
-        gridX0 = std::min(gridX0, rect.x0);
-        gridY0 = std::min(gridY0, rect.y0);
-        gridX1 = std::max(gridX1, rect.x1);
-        gridY1 = std::max(gridY1, rect.y1);
+        rects[prim] = {rect.x0 - margin, rect.y0 - margin, rect.x1 + margin, rect.y1 + margin, rect.reach};
     }
+    return true;
+}
 
+void PointView::sizeGrid(const std::vector<Rect>& rects) {
+    double x0 = kInfinity, y0 = kInfinity, x1 = -kInfinity, y1 = -kInfinity;
+    for (const Rect& rect : rects) {
+        x0 = std::min(x0, rect.x0);
+        y0 = std::min(y0, rect.y0);
+        x1 = std::max(x1, rect.x1);
+        y1 = std::max(y1, rect.y1);
+    }
     // Square cells, about kCellsPerTriangle per triangle, or larger ones while the lists would
     // hold more than kMaxEntriesPerTriangle entries a triangle (long thin triangles, whose
     // rectangles cover many cells: the engine's).
-    const double width = gridX1 - gridX0, height = gridY1 - gridY0;
-    b.gridX_ = gridX0;
-    b.gridY_ = gridY0;
-    b.cellSize_ = std::max(std::sqrt(width * height / (kCellsPerTriangle * n)), 1e-9 * std::max(width, height));
+    const double width = x1 - x0, height = y1 - y0;
+    gridX_ = x0;
+    gridY_ = y0;
+    cellSize_ = std::max(std::sqrt(width * height / (kCellsPerTriangle * rects.size())), 1e-9 * std::max(width, height));
     for (;;) {
-        b.columns_ = std::clamp(int(std::ceil(width / b.cellSize_)), 1, 4096);
-        b.rows_ = std::clamp(int(std::ceil(height / b.cellSize_)), 1, 4096);
-        b.cellSize_ = std::max(width / b.columns_, height / b.rows_);
-        b.inverseCellSize_ = 1.0 / b.cellSize_;
+        columns_ = std::clamp(int(std::ceil(width / cellSize_)), 1, 4096);
+        rows_ = std::clamp(int(std::ceil(height / cellSize_)), 1, 4096);
+        cellSize_ = std::max(width / columns_, height / rows_);
+        inverseCellSize_ = 1.0 / cellSize_;
         size_t entries = 0;
-        for (const Rect& rect : rects)
-            entries += size_t(b.cellOf(rect.x1, b.gridX_, b.columns_) - b.cellOf(rect.x0, b.gridX_, b.columns_) + 1) *
-                       size_t(b.cellOf(rect.y1, b.gridY_, b.rows_) - b.cellOf(rect.y0, b.gridY_, b.rows_) + 1);
-        if (entries <= kMaxEntriesPerTriangle * n || (b.columns_ == 1 && b.rows_ == 1)) break;
-        b.cellSize_ *= 1.5;
+        for (const Rect& rect : rects) entries += size_t(columnsOf(rect)) * size_t(rowsOf(rect));
+        if (entries <= kMaxEntriesPerTriangle * rects.size() || (columns_ == 1 && rows_ == 1)) break;
+        cellSize_ *= 1.5;
     }
+}
 
+void PointView::fillCells(const PrimitiveSet& primitives, const std::vector<Rect>& rects) {
     // Each cell's triangles, counted, placed, then sorted nearest first.
-    const size_t cells = size_t(b.columns_) * b.rows_;
-    std::vector<uint32_t> entryStart(cells + 1, 0);
-    auto eachCell = [&b](const Rect& rect, auto&& visit) {
-        int x0 = b.cellOf(rect.x0, b.gridX_, b.columns_), x1 = b.cellOf(rect.x1, b.gridX_, b.columns_);
-        int y0 = b.cellOf(rect.y0, b.gridY_, b.rows_), y1 = b.cellOf(rect.y1, b.gridY_, b.rows_);
-        for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x) visit(size_t(y) * b.columns_ + x);
+    const size_t cells = size_t(columns_) * rows_;
+    auto eachCell = [this](const Rect& rect, auto&& visit) {
+        int x0 = cellOf(rect.x0, gridX_, columns_), y0 = cellOf(rect.y0, gridY_, rows_);
+        for (int y = y0; y < y0 + rowsOf(rect); ++y)
+            for (int x = x0; x < x0 + columnsOf(rect); ++x) visit(size_t(y) * columns_ + x);
     };
+    std::vector<uint32_t> entryStart(cells + 1, 0);
     for (const Rect& rect : rects) eachCell(rect, [&](size_t cell) { ++entryStart[cell + 1]; });
     for (size_t cell = 0; cell < cells; ++cell) entryStart[cell + 1] += entryStart[cell];
     std::vector<Entry> list(entryStart.back());
     std::vector<uint32_t> fill(entryStart.begin(), entryStart.end() - 1);
-    for (uint32_t prim = 0; prim < n; ++prim)
+    for (uint32_t prim = 0; prim < rects.size(); ++prim)
         eachCell(rects[prim], [&](size_t cell) { list[fill[cell]++] = Entry{rects[prim].reach, prim}; });
 
     // Four triangles to a packet, a cell's packets in a row; a packet's reach is its first
     // triangle's, the nearest.
-    b.cellStart_.assign(cells + 1, 0);
+    cellStart_.assign(cells + 1, 0);
     for (size_t cell = 0; cell < cells; ++cell) {
         uint32_t count = entryStart[cell + 1] - entryStart[cell];
-        b.cellStart_[cell + 1] = b.cellStart_[cell] + (count + TrianglePacket::kLanes - 1) / TrianglePacket::kLanes;
+        cellStart_[cell + 1] = cellStart_[cell] + (count + TrianglePacket::kLanes - 1) / TrianglePacket::kLanes;
     }
-    b.packets_.resize(b.cellStart_.back());
-    b.packetReach_.resize(b.cellStart_.back());
+    packets_.resize(cellStart_.back());
+    packetReach_.resize(cellStart_.back());
     for (size_t cell = 0; cell < cells; ++cell) {
         Entry* first = list.data() + entryStart[cell];
         Entry* last = list.data() + entryStart[cell + 1];
         std::sort(first, last, [](const Entry& a, const Entry& c) { return a.reach < c.reach || (a.reach == c.reach && a.prim < c.prim); });
-        uint32_t packet = b.cellStart_[cell];
+        uint32_t packet = cellStart_[cell];
         for (Entry* e = first; e < last; e += TrianglePacket::kLanes, ++packet) {
             uint32_t ids[TrianglePacket::kLanes];
             int count = int(std::min<ptrdiff_t>(TrianglePacket::kLanes, last - e));
             for (int lane = 0; lane < count; ++lane) ids[lane] = e[lane].prim;
-            b.packets_[packet].fill(primitives, std::span<const uint32_t>(ids, size_t(count)));
+            packets_[packet].fill(primitives, std::span<const uint32_t>(ids, size_t(count)));
             // Rounded down, so that a float comparison never skips a packet the double one keeps.
-            b.packetReach_[packet] = std::nextafter(float(e->reach), 0.0f);
+            packetReach_[packet] = std::nextafter(float(e->reach), 0.0f);
         }
     }
-    return buffer;
+}
+
+int PointView::columnsOf(const Rect& rect) const {
+    return cellOf(rect.x1, gridX_, columns_) - cellOf(rect.x0, gridX_, columns_) + 1;
+}
+
+int PointView::rowsOf(const Rect& rect) const {
+    return cellOf(rect.y1, gridY_, rows_) - cellOf(rect.y0, gridY_, rows_) + 1;
 }
 
 // The build places a triangle's rectangle and a query its direction by the same arithmetic,

@@ -45,6 +45,25 @@ public:
 private:
     PointView(const Vec3& point, const Accelerator& fallback) : point_(point), fallback_(fallback) {}
 
+    // A triangle's rectangle on the plane, widened by its margin, and its nearest distance to
+    // the point.
+    struct Rect {
+        double x0, y0, x1, y1, reach;
+    };
+
+    // The building steps. frameBounds sets the plane across the cone the bounds lie in, seen
+    // from the point, and gives the cone's least cosine and the farthest corner's distance;
+    // false when the bounds do not lie within 78 degrees of its axis. rectangles gives every
+    // triangle's Rect; false when one is too near the point. sizeGrid lays the cells over the
+    // rectangles, fillCells lists each cell's triangles.
+    bool frameBounds(const Bounds3f& bounds, double& minCosine, double& reach);
+    bool rectangles(const PrimitiveSet& primitives, double planeScale, double reach, std::vector<Rect>& rects) const;
+    void sizeGrid(const std::vector<Rect>& rects);
+    void fillCells(const PrimitiveSet& primitives, const std::vector<Rect>& rects);
+    // How many columns and rows of cells a rectangle covers.
+    int columnsOf(const Rect& rect) const;
+    int rowsOf(const Rect& rect) const;
+
     // The plane coordinates of the direction w from the point, or false when w does not point
     // into the cone's side of the plane.
     bool project(const DVec3& w, double& x, double& y) const;
