@@ -235,9 +235,4 @@ bool PointView::occluded(const Ray& ray, TraversalStats& stats) const {
     }
     return false;
 }
-
-size_t PointView::memoryBytes() const {
-    return cellStart_.size() * sizeof(uint32_t) + packets_.size() * (sizeof(TrianglePacket) + sizeof(float));
-}
-
 }  // namespace rtlab

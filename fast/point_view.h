@@ -40,7 +40,6 @@ public:
 
     Hit intersect(const Ray& ray, TraversalStats& stats) const override;
     bool occluded(const Ray& ray, TraversalStats& stats) const override;
-    size_t memoryBytes() const;
 
 private:
     PointView(const Vec3& point, const Accelerator& fallback) : point_(point), fallback_(fallback) {}
