@@ -235,4 +235,5 @@ bool PointView::occluded(const Ray& ray, TraversalStats& stats) const {
     }
     return false;
 }
+
 }  // namespace rtlab
