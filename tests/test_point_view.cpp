@@ -87,6 +87,15 @@ struct Model {
         : scene(loadFetchedModel(file)), prims(scene), bounds(scene.bounds()), fast(built("fastbvh", prims)) {}
 };
 
+// Calls check(model) for the bunny and the engine.
+template <typename Check>
+void eachModel(Check&& check) {
+    for (const char* file : {"bunny.gltf", "engine.glb"}) {
+        CAPTURE(file);
+        check(Model(file));
+    }
+}
+
 // Calls check(point, view) for every point around the model (pointsAround) that gets a view:
 // at least 16 of the 24 must (the others are too near a triangle, or beside the bounds).
 template <typename Check>
@@ -103,9 +112,7 @@ void eachView(const Model& model, Check&& check) {
 }
 
 TEST_CASE("point view: every shadow ray answered as the wide BVH answers it") {
-    for (const char* file : {"bunny.gltf", "engine.glb"}) {
-        CAPTURE(file);
-        const Model model(file);
+    eachModel([](const Model& model) {
         const PrimitiveSet& prims = model.prims;
         const Bounds3f& bounds = model.bounds;
         const Accelerator& fast = *model.fast;
@@ -153,13 +160,11 @@ TEST_CASE("point view: every shadow ray answered as the wide BVH answers it") {
                 CHECK(tally->blocked < tally->rays);
             }
         });
-    }
+    });
 }
 
 TEST_CASE("point view: every ray from the point hits what the wide BVH's ray hits") {
-    for (const char* file : {"bunny.gltf", "engine.glb"}) {
-        CAPTURE(file);
-        const Model model(file);
+    eachModel([](const Model& model) {
         const PrimitiveSet& prims = model.prims;
         const Bounds3f& bounds = model.bounds;
         const Accelerator& fast = *model.fast;
@@ -190,7 +195,7 @@ TEST_CASE("point view: every ray from the point hits what the wide BVH's ray hit
             CHECK(hits > rays / 10);
             CHECK(hits < rays);
         });
-    }
+    });
 }
 
 TEST_CASE("point view: rays neither from nor toward its point are the BVH's, and it declines what it cannot be sure of") {
