@@ -42,9 +42,8 @@ public:
         }
         if (lanes_ == 0) return false;
         const float tMax = hit ? hit->t : ray_.tMax;
-        // Lanes left over from the previous packet hold triangles tested already: a degenerate
-        // triangle in their place is never hit.
-        for (int lane = lanes_; lane < TrianglePacket::kLanes; ++lane) packet_.set(lane, kNoPrimitive, kNoTriangle);
+        // Lanes left over from the previous packet hold triangles tested already.
+        packet_.pad(lanes_, true);
         lanes_ = 0;
         if (!hit) return sheared_.anyHit(packet_, tMax);
         PacketHit nearest = sheared_.closest(packet_, tMax);

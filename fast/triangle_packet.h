@@ -27,7 +27,7 @@ inline constexpr uint32_t kNoPrimitive = 0xffffffffu;
 inline const std::array<Vec3, 3> kNoTriangle{Vec3(0.0f), Vec3(0.0f), Vec3(0.0f)};
 
 // No default initialiser: the wide BVH's packets are allocated uninitialised and filled on
-// several threads, each written once (fill); a gatherer sets every lane itself (set).
+// several threads, each written once (fill); a gatherer sets every lane itself (set, then pad).
 struct alignas(16) TrianglePacket {
     static constexpr int kLanes = 4;
     // vertex[v][axis][lane]: coordinate `axis` of vertex v of the lane's triangle, so one row is
@@ -42,13 +42,28 @@ struct alignas(16) TrianglePacket {
             for (int axis = 0; axis < 3; ++axis) vertex[v][axis][lane] = triangle[v][axis];
     }
 
-    // Every lane: the primitives' triangles in order, then lanes with no triangle. A sphere keeps
-    // its id in a lane with no triangle; the traversal tests it on its own.
+    // The lanes after the first `used`: copies of lane used - 1 where that lane holds a triangle,
+    // else lanes with no triangle. A copy changes no answer (its hit is its original's: the same
+    // id, distance and barycentrics, and the last of equally near lanes either way), but unlike
+    // a degenerate lane the test's float screen can rule it out (ShearedRay::test).
+    void pad(int used, bool lastIsTriangle) {
+        for (int lane = used; lane < kLanes; ++lane) {
+            prim[lane] = used > 0 && lastIsTriangle ? prim[used - 1] : kNoPrimitive;
+            for (int v = 0; v < 3; ++v)
+                for (int axis = 0; axis < 3; ++axis)
+                    vertex[v][axis][lane] = used > 0 && lastIsTriangle ? vertex[v][axis][used - 1] : 0.0f;
+        }
+    }
+
+    // Every lane: the primitives' triangles in order, then padding. A sphere keeps its id in a
+    // lane with no triangle; the traversal tests it on its own.
     void fill(const PrimitiveSet& primitives, std::span<const uint32_t> prims) {
-        for (int lane = 0; lane < kLanes; ++lane) {
-            uint32_t id = lane < int(prims.size()) ? prims[lane] : kNoPrimitive;
+        const int used = int(prims.size());
+        for (int lane = 0; lane < used; ++lane) {
+            uint32_t id = prims[lane];
             set(lane, id, id < primitives.triangleCount() ? primitives.triangle(id) : kNoTriangle);
         }
+        pad(used, used > 0 && prims[used - 1] < primitives.triangleCount());
     }
 };
 
@@ -102,11 +117,13 @@ private:
     struct LaneHits {
         Lanes t, b1, b2;
         Mask hit;
+
+        static LaneHits none() { return {Lanes{}, Lanes{}, Lanes{}, Mask{}}; }
     };
 
     // The test itself, lane by lane: which lanes are hit, and where.
     LaneHits test(const TrianglePacket& packet, float tMax) const {
-        if (!valid_) return LaneHits{Lanes{}, Lanes{}, Lanes{}, Mask{}};
+        if (!valid_) return LaneHits::none();
         // Vertex coordinates relative to the ray origin, in the permuted axes (x, y, z) = (kx,
         // ky, kz): a row load each.
         Lanes a[3], b[3], c[3];
@@ -119,6 +136,11 @@ private:
         Lanes bx = b[0] + sx_ * b[2], by = b[1] + sy_ * b[2];
         Lanes cx = c[0] + sx_ * c[2], cy = c[1] + sy_ * c[2];
 
+        // Most triangles a ray is tested against lie clearly beside it. A screen in float finds
+        // those lanes, and when it finds all four the exact edge functions (in double) are not
+        // needed. Everything else is decided by the exact arithmetic alone, so the answers are
+        // the same with or without the screen.
+        if (laneBits<4>(surelyOutside(bx, cy, by, cx, cx, ay, cy, ax, ax, by, ay, bx)) == 0xfu) return LaneHits::none();
         Lanes e0 = differenceOfProducts(bx, cy, by, cx);
         Lanes e1 = differenceOfProducts(cx, ay, cy, ax);
         Lanes e2 = differenceOfProducts(ax, by, ay, bx);
@@ -135,6 +157,30 @@ private:
         Mask hit = ~(anyNegative & anyPositive) & (det != zero) & (t > tMin_) & (t <= broadcast<4>(tMax)) &
                    ((t - t) == zero);
         return {t, e1 * invDet, e2 * invDet, hit};
+    }
+
+    // The float screen: lanes where, of the three exact edge functions a*b - c*d, one is
+    // certainly negative and another certainly positive, so that the exact test misses too.
+    // In float, p - q (p = a*b, q = c*d) is off the exact value by at most u|a*b| + u|c*d| +
+    // u|p - q| < 2.01u (|p| + |q|), whether the compiler contracts p - q into one FMA or not.
+    // The bound used is 8u (|p| + |q|), which no rounding of its own brings below that, plus
+    // 2^-100 for products that underflow. Infinite and NaN values compare false: not ruled out.
+    static Mask surelyOutside(Lanes a0, Lanes b0, Lanes c0, Lanes d0, Lanes a1, Lanes b1, Lanes c1, Lanes d1,
+                              Lanes a2, Lanes b2, Lanes c2, Lanes d2) {
+        struct Sign {
+            Mask negative, positive;
+        };
+        auto sign = [](Lanes a, Lanes b, Lanes c, Lanes d) {
+            const Lanes p = a * b, q = c * d, value = p - q;
+            const Lanes bound = (magnitude(p) + magnitude(q)) * broadcast<4>(0x1p-21f) + broadcast<4>(0x1p-100f);
+            return Sign{value < -bound, value > bound};
+        };
+        const Sign s0 = sign(a0, b0, c0, d0), s1 = sign(a1, b1, c1, d1), s2 = sign(a2, b2, c2, d2);
+        return (s0.negative | s1.negative | s2.negative) & (s0.positive | s1.positive | s2.positive);
+    }
+
+    static Lanes magnitude(Lanes v) {
+        return std::bit_cast<Lanes>(std::bit_cast<Mask>(v) & 0x7fffffff);
     }
 
     // a*b - c*d per lane with the exact sign, as float_bits.h's differenceOfProducts: the
