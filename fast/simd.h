@@ -54,4 +54,21 @@ unsigned laneBits(SimdMask<N> mask) {
     return bits;
 }
 
+// The value as it stands, rounded: the compiler cannot fuse the operation that made it into the
+// next one (FMA contraction, which GCC does by default wherever the target has FMA), because an
+// empty asm statement it cannot see through holds it in a register. Elsewhere a volatile copy
+// does the same at the cost of a store and a load.
+template <typename V>
+V roundedAsIs(V value) {
+#if defined(__x86_64__) || defined(__i386__)
+    asm("" : "+x"(value));
+#elif defined(__aarch64__)
+    asm("" : "+w"(value));
+#else
+    volatile V copy = value;
+    value = copy;
+#endif
+    return value;
+}
+
 }  // namespace rtlab

@@ -159,28 +159,28 @@ private:
         return {t, e1 * invDet, e2 * invDet, hit};
     }
 
-    // The float screen: lanes where, of the three exact edge functions a*b - c*d, one is
-    // certainly negative and another certainly positive, so that the exact test misses too.
-    // In float, p - q (p = a*b, q = c*d) is off the exact value by at most u|a*b| + u|c*d| +
-    // u|p - q| < 2.01u (|p| + |q|), whether the compiler contracts p - q into one FMA or not.
-    // The bound used is 8u (|p| + |q|), which no rounding of its own brings below that, plus
-    // 2^-100 for products that underflow. Infinite and NaN values compare false: not ruled out.
+    // The float screen: lanes where, of the three exact edge functions a*b - c*d, one is surely
+    // negative and another surely positive, so that the exact test misses too. In float, with
+    // p = a*b and q = c*d rounded:
+    //  * the sign of p - q is never wrong. Rounding is monotonic, so a*b < c*d gives p <= q, and
+    //    p < q only if a*b < c*d. This needs p and q rounded before the subtraction: fused into
+    //    one FMA, a*b - q can have the wrong sign, hence roundedAsIs.
+    //  * it can be tiny where the exact value, rounded to float, is 0 (products that
+    //    underflow). |p - q| > 2^-60 rules that out: then p or q is above 2^-62, and a*b and
+    //    c*d, if not equal, differ by at least 2^-110, which stays nonzero as a float.
+    // Infinite and NaN values compare false: not ruled out.
     static Mask surelyOutside(Lanes a0, Lanes b0, Lanes c0, Lanes d0, Lanes a1, Lanes b1, Lanes c1, Lanes d1,
                               Lanes a2, Lanes b2, Lanes c2, Lanes d2) {
         struct Sign {
             Mask negative, positive;
         };
         auto sign = [](Lanes a, Lanes b, Lanes c, Lanes d) {
-            const Lanes p = a * b, q = c * d, value = p - q;
-            const Lanes bound = (magnitude(p) + magnitude(q)) * broadcast<4>(0x1p-21f) + broadcast<4>(0x1p-100f);
-            return Sign{value < -bound, value > bound};
+            const Lanes value = roundedAsIs(a * b) - roundedAsIs(c * d);
+            const Lanes floor = broadcast<4>(0x1p-60f);
+            return Sign{value < -floor, value > floor};
         };
         const Sign s0 = sign(a0, b0, c0, d0), s1 = sign(a1, b1, c1, d1), s2 = sign(a2, b2, c2, d2);
         return (s0.negative | s1.negative | s2.negative) & (s0.positive | s1.positive | s2.positive);
-    }
-
-    static Lanes magnitude(Lanes v) {
-        return std::bit_cast<Lanes>(std::bit_cast<Mask>(v) & 0x7fffffff);
     }
 
     // a*b - c*d per lane with the exact sign, as float_bits.h's differenceOfProducts: the

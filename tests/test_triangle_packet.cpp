@@ -4,8 +4,9 @@
 // an edge function can have the wrong sign, so the test's float screen must leave those lanes
 // to the exact arithmetic.
 //
-// Mutants it catches: a screen without its relative bound (a float sign decides: the grazing
-// rays), and one without its absolute floor (tiny triangles, whose products underflow).
+// Mutants it catches: a screen whose products the compiler may fuse into the subtraction
+// (caught by test_triangle_packet_fma, built with FMA contraction, on the vertex and grazing
+// rays), and one without its floor (tiny triangles, whose products underflow).
 #include "fast/triangle_packet.h"
 #include "framework/core/float_bits.h"
 #include "framework/core/pcg32.h"
