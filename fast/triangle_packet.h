@@ -5,7 +5,8 @@
 // The arithmetic is the a0 reference's (solutions/a0_intersect/ray_triangle.cpp) operation for
 // operation, lane by lane, and of several hits the one a loop over the lanes in order would keep
 // is returned. So a traversal using packets reports the same hits, bit for bit, as one calling
-// intersectTriangle on each triangle.
+// intersectTriangle on each triangle. A float screen goes first and only ever rules out lanes
+// the exact arithmetic misses too (ShearedRay::surelyOutside).
 #pragma once
 
 #include "fast/simd.h"
