@@ -7,6 +7,7 @@
 #include "bench/shadow_rays.h"
 #include "bench/throughput.h"
 #include "bench/timing.h"
+#include "fast/wide_bvh_dispatch.h"
 #include "framework/accel/accelerator_registry.h"
 #include "framework/accel/primitive_set.h"
 #include "framework/core/error.h"
@@ -210,7 +211,9 @@ RaceResult runRace(const RaceOptions& options) {
 
 void writeRaceMarkdown(std::ostream& out, const RaceResult& result) {
     const RaceOptions& o = result.options;
-    out << "rtlab:" << result.accelerator << " against embree:medium, " << o.rounds
+    // Which copy of fast/'s wide traversal ran (fast/wide_bvh_dispatch.h): Embree picks its ISA
+    // at run time, and a portable build does too.
+    out << "rtlab:" << result.accelerator << (usesAvx2Copy() ? " (its AVX2 copy)" : "") << " against embree:medium, " << o.rounds
         << " alternating rounds" << (o.rayStride > 1 ? ", every " + std::to_string(o.rayStride) + "th ray" : "")
         << "; load average " << result.loadAtStart << " at the start, " << result.loadAtEnd << " at the end.\n\n"
         << "| scene | query | threads | ours (median) | Embree (median) | ratio: median | min–max | mismatches |\n"

@@ -11,11 +11,14 @@ namespace rtlab {
 namespace {
 
 // Eight lanes fill one AVX register; without AVX an eight-wide node runs as two SSE halves.
+// A portable build running its AVX2 copy of the traversal (wide_bvh_dispatch.h) has AVX.
+const char* defaultWidth() {
 #if defined(__AVX__)
-constexpr const char* kDefaultWidth = "8";
+    return "8";
 #else
-constexpr const char* kDefaultWidth = "4";
+    return usesAvx2Copy() ? "8" : "4";
 #endif
+}
 
 template <int W>
 std::unique_ptr<Accelerator> wideBvhOf(const WideBvhBuildOptions& options) {
@@ -45,7 +48,7 @@ AcceleratorType fastBvhType() {
             "a wide BVH from fast/'s own builder: binned SAH on all axes and threads, leaves priced by "
             "their packets of four triangles (fast/)",
             {
-                {"width", "children per node", kDefaultWidth, 0, 0, false, {"4", "8"}},
+                {"width", "children per node", defaultWidth(), 0, 0, false, {"4", "8"}},
                 {"leaf", "largest leaf (triangles)", std::to_string(defaults.maxLeaf), 1, 1024, true, {}},
                 {"bins", "SAH bins per axis", std::to_string(defaults.bins), 2, kMaxSahBins, true, {}},
                 {"Ci", "cost of a packet test, in node tests", numberText(defaults.packetCost), 0.125, 8, false, {}},

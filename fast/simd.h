@@ -7,11 +7,14 @@
 // expression computes; the wide BVH relies on that to report the scalar tests' hits bit for bit.
 #pragma once
 
+#include "fast/isa.h"
+
 #include <bit>
 #include <cstdint>
 #include <cstring>
 
 namespace rtlab {
+RTLAB_ISA_NAMESPACE_BEGIN
 
 template <typename T, int N>
 struct SimdVector {
@@ -71,4 +74,5 @@ V roundedAsIs(V value) {
     return value;
 }
 
+RTLAB_ISA_NAMESPACE_END
 }  // namespace rtlab

@@ -68,6 +68,8 @@ struct alignas(16) TrianglePacket {
     }
 };
 
+RTLAB_ISA_NAMESPACE_BEGIN
+
 // The lane of the nearest hit in a packet (-1 for none) and where it is.
 struct PacketHit {
     int lane = -1;
@@ -208,4 +210,5 @@ private:
     bool valid_;
 };
 
+RTLAB_ISA_NAMESPACE_END
 }  // namespace rtlab

@@ -16,6 +16,7 @@
 #include "fast/task_pool.h"
 #include "fast/triangle_packet.h"
 #include "fast/wide_bvh.h"
+#include "fast/wide_bvh_dispatch.h"
 #include "framework/accel/accelerator.h"
 
 #include <functional>
@@ -43,16 +44,6 @@ public:
     size_t memoryBytes() const override;
 
 private:
-    // The traversals, compiled twice: with kSpheres false (the scene is all triangles) the
-    // loop makes no calls, so its SIMD registers need not be saved around them.
-    template <bool kSpheres>
-    Hit closestHit(const Ray& ray, TraversalStats& stats) const;
-    template <bool kSpheres>
-    bool anyHit(const Ray& ray, TraversalStats& stats) const;
-    // Tests the spheres among a packet's primitives (lanes without a triangle), updating hit;
-    // true when one is hit.
-    bool intersectSpheres(const TrianglePacket& packet, const Ray& ray, Hit& hit) const;
-
     TreeBuilder makeTree_;
     int packingThreads_;
     const PrimitiveSet* primitives_ = nullptr;
@@ -61,6 +52,8 @@ private:
     // its primCount primitives fill that packet and the next ones, four to a packet.
     HugePageVector<WideBvhNode<W>> nodes_;
     HugePageVector<TrianglePacket> packets_;
+    WideBvhArrays<W> arrays_;       // the two arrays above, for the traversal
+    WideTraversal<W> traversal_{};  // the copy this CPU runs (wide_bvh_dispatch.h)
 };
 
 }  // namespace rtlab

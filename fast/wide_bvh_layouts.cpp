@@ -24,15 +24,20 @@ AcceleratorType wideBvhType(const char* name, const char* description, int speed
 }
 
 // Eight lanes fill one AVX register; without AVX they run as two SSE halves and the four-wide
-// tree renders faster (docs/performance.md#the-renderer).
+// tree renders faster (docs/performance.md#the-renderer). A portable build running its AVX2
+// copy of the traversal (wide_bvh_dispatch.h) has AVX.
+bool eightLanesFit() {
 #if defined(__AVX__)
-constexpr int kFourWideRank = 1, kEightWideRank = 2;
+    return true;
 #else
-constexpr int kFourWideRank = 2, kEightWideRank = 1;
+    return usesAvx2Copy();
 #endif
+}
 
-const AcceleratorRegistration kFourWide{wideBvhType<4>("bvh4", "the bvh tree four wide (fast/)", kFourWideRank)};
-const AcceleratorRegistration kEightWide{wideBvhType<8>("bvh8", "the bvh tree eight wide (fast/)", kEightWideRank)};
+const AcceleratorRegistration kFourWide{
+    wideBvhType<4>("bvh4", "the bvh tree four wide (fast/)", eightLanesFit() ? 1 : 2)};
+const AcceleratorRegistration kEightWide{
+    wideBvhType<8>("bvh8", "the bvh tree eight wide (fast/)", eightLanesFit() ? 2 : 1)};
 
 }  // namespace
 }  // namespace rtlab
