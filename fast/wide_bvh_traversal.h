@@ -30,8 +30,9 @@ struct WideBvhArrays {
 };
 
 RTLAB_ISA_NAMESPACE_BEGIN
-// Internal to each file that includes this one: wide_bvh_dispatch.cpp and the AVX2 file each
-// compile their own copy, which GCC inlines as it would a file's own helpers.
+// Internal to each file that includes this one, so that no two files share these functions by
+// name; only wide_bvh_dispatch.cpp and the AVX2 file instantiate the walk, each its own copy,
+// which GCC then inlines as it would a file's own helpers.
 namespace {
 
 template <int W>
