@@ -3,8 +3,8 @@
 // wide_bvh_traversal_avx2.cpp, with -mavx2, chosen at run time by the CPU (wide_bvh_dispatch.h).
 // The two copies of every inline function they share must not meet at link time, where the
 // linker keeps one of each name: AVX2 code would then run on CPUs without it. So the code both
-// copies compile (simd.h, ShearedRay, the traversal) sits in RTLAB_ISA_NAMESPACE, which is an
-// inline namespace of its own name in the AVX2 copy and nothing in the other; a build test
+// copies compile (simd.h, ShearedRay, the traversal) sits between RTLAB_ISA_NAMESPACE_BEGIN and
+// _END: an inline namespace of its own name in the AVX2 copy, nothing in the other; a build test
 // (fast/check-isa-copy) checks that the AVX2 object defines no other inline function.
 #pragma once
 
