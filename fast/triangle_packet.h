@@ -31,16 +31,18 @@ inline const std::array<Vec3, 3> kNoTriangle{Vec3(0.0f), Vec3(0.0f), Vec3(0.0f)}
 // several threads, each written once (fill); a gatherer sets every lane itself (set, then pad).
 struct alignas(16) TrianglePacket {
     static constexpr int kLanes = 4;
-    // vertex[v][axis][lane]: coordinate `axis` of vertex v of the lane's triangle, so one row is
-    // one SIMD load. A lane without a triangle has all three vertices at the origin: a
-    // degenerate triangle, whose edge functions are all zero, so no ray hits it.
-    float vertex[3][3][kLanes];
+    // coordinate[axis][v][lane]: coordinate `axis` of vertex v of the lane's triangle, so one row
+    // is one SIMD load, and a ray's test finds the three rows of one axis at fixed distances
+    // from each other (three offsets per ray, not nine registers). A lane without a triangle
+    // has all three vertices at the origin: a degenerate triangle, whose edge functions are
+    // all zero, so no ray hits it.
+    float coordinate[3][3][kLanes];
     uint32_t prim[kLanes];
 
     void set(int lane, uint32_t id, const std::array<Vec3, 3>& triangle) {
         prim[lane] = id;
         for (int v = 0; v < 3; ++v)
-            for (int axis = 0; axis < 3; ++axis) vertex[v][axis][lane] = triangle[v][axis];
+            for (int axis = 0; axis < 3; ++axis) coordinate[axis][v][lane] = triangle[v][axis];
     }
 
     // The lanes after the first `used`: copies of lane used - 1 where that lane holds a triangle,
@@ -52,7 +54,7 @@ struct alignas(16) TrianglePacket {
             prim[lane] = used > 0 && lastIsTriangle ? prim[used - 1] : kNoPrimitive;
             for (int v = 0; v < 3; ++v)
                 for (int axis = 0; axis < 3; ++axis)
-                    vertex[v][axis][lane] = used > 0 && lastIsTriangle ? vertex[v][axis][used - 1] : 0.0f;
+                    coordinate[axis][v][lane] = used > 0 && lastIsTriangle ? coordinate[axis][v][used - 1] : 0.0f;
         }
     }
 
@@ -87,7 +89,11 @@ public:
         // Plain arrays: indexing a glm vector by a run-time axis compiles to a switch.
         const float origin[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
         const float direction[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
-        int kz = maxComponentIndex(Vec3(std::fabs(direction[0]), std::fabs(direction[1]), std::fabs(direction[2])));
+        // maxComponentIndex's choice, computed without branches: for incoherent rays which axis
+        // is largest is a coin toss, and its branches missed about once per ray.
+        const float absX = std::fabs(direction[0]), absY = std::fabs(direction[1]), absZ = std::fabs(direction[2]);
+        const int xLargest = (absX >= absY) & (absX >= absZ);
+        int kz = (1 - xLargest) * (2 - int(absY >= absZ));
         int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
         axis_ = {kx, ky, kz};
         float dz = direction[kz];
@@ -131,9 +137,9 @@ private:
         // ky, kz): a row load each.
         Lanes a[3], b[3], c[3];
         for (int i = 0; i < 3; ++i) {
-            a[i] = load<4>(packet.vertex[0][axis_[i]]) - origin_[i];
-            b[i] = load<4>(packet.vertex[1][axis_[i]]) - origin_[i];
-            c[i] = load<4>(packet.vertex[2][axis_[i]]) - origin_[i];
+            a[i] = load<4>(packet.coordinate[axis_[i]][0]) - origin_[i];
+            b[i] = load<4>(packet.coordinate[axis_[i]][1]) - origin_[i];
+            c[i] = load<4>(packet.coordinate[axis_[i]][2]) - origin_[i];
         }
         Lanes ax = a[0] + sx_ * a[2], ay = a[1] + sy_ * a[2];
         Lanes bx = b[0] + sx_ * b[2], by = b[1] + sy_ * b[2];

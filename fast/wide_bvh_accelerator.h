@@ -48,11 +48,10 @@ private:
     int packingThreads_;
     const PrimitiveSet* primitives_ = nullptr;
     bool hasSpheres_ = false;
-    // The wide tree; a leaf child refers to its first packet (kLeafFlag | packet index), and
-    // its primCount primitives fill that packet and the next ones, four to a packet.
-    HugePageVector<WideBvhNode<W>> nodes_;
-    HugePageVector<TrianglePacket> packets_;
-    WideBvhArrays<W> arrays_;       // the two arrays above, for the traversal
+    // The wide tree, each node followed by its leaves' packets (WideBvhArrays); a leaf's
+    // primCount primitives fill its first packet and the next ones, four to a packet.
+    HugePageVector<TreeUnit> memory_;
+    WideBvhArrays<W> arrays_;       // memory_, for the traversal
     WideTraversal<W> traversal_{};  // the copy this CPU runs (wide_bvh_dispatch.h)
 };
 

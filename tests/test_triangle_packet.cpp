@@ -6,7 +6,8 @@
 //
 // Mutants it catches: a screen whose products the compiler may fuse into the subtraction
 // (caught by test_triangle_packet_fma, built with FMA contraction, on the vertex and grazing
-// rays), and one without its floor (tiny triangles, whose products underflow).
+// rays), one without its floor (tiny triangles, whose products underflow), and a shear axis
+// chosen otherwise than a0 chooses it where components tie (> for >=).
 #include "fast/triangle_packet.h"
 #include "framework/core/float_bits.h"
 #include "framework/core/pcg32.h"
@@ -163,6 +164,23 @@ TEST_CASE("the packet test agrees with the loop on rays that graze an edge next 
 TEST_CASE("the packet test agrees with the loop on triangles so small that float products underflow") {
     checkScale(8e-20f, Vec3(0.0f), 4, 0.05f);
     checkScale(1.1e-19f, Vec3(0.0f), 5, 0.2f);
+}
+
+TEST_CASE("the packet test shears along a0's axis where the direction's largest components tie") {
+    // The axis that becomes z is the largest |component|, the first of equals, as a0's
+    // maxComponentIndex picks it; another axis gives other bits of t and the barycentrics.
+    const std::array<Vec3, 7> directions{Vec3(1, 1, 0.5f), Vec3(-1, 0.5f, 1), Vec3(0.25f, -1, 1), Vec3(1, 1, 1),
+                                         Vec3(-1, -1, -1), Vec3(0.75f, 1, -1), Vec3(1, -0.5f, -1)};
+    Pcg32 random(8, 7);
+    for (int trial = 0; trial < 4000; ++trial) {
+        const std::array<Triangle, 4> triangles = fan(random, 1.0f, Vec3(0.0f));
+        const Vec3 aim = target(random, triangles);
+        const Vec3& direction = directions[trial % directions.size()];
+        const Ray ray{aim - 3.0f * direction, direction};
+        const std::string why = difference(ray, triangles);
+        INFO("trial ", trial, ", direction ", direction.x, " ", direction.y, " ", direction.z);
+        REQUIRE_MESSAGE(why.empty(), why);
+    }
 }
 
 TEST_CASE("padding repeats the last triangle, and a lane of no triangle is never hit") {
