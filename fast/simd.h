@@ -10,8 +10,10 @@
 #include "fast/isa.h"
 
 #include <bit>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <utility>
 
 namespace rtlab {
 RTLAB_ISA_NAMESPACE_BEGIN
@@ -27,6 +29,16 @@ using Simd = typename SimdVector<T, N>::type;
 // The integer vector a comparison of Simd<float, N> returns.
 template <int N>
 using SimdMask = Simd<int32_t, N>;
+
+// {0, 1, ..., N - 1}: each lane's index, as a constant.
+template <int N, size_t... I>
+constexpr SimdMask<N> laneIndicesOf(std::index_sequence<I...>) {
+    return SimdMask<N>{int32_t(I)...};
+}
+template <int N>
+constexpr SimdMask<N> laneIndices() {
+    return laneIndicesOf<N>(std::make_index_sequence<N>{});
+}
 
 template <int N>
 Simd<float, N> broadcast(float value) {

@@ -150,14 +150,12 @@ template <int W>
 SimdMask<W> waitingPlaces(const ChildHits<W>& hits) {
     using Ints = SimdMask<W>;
     const Ints key = orderedKeys<W>(hits, INT32_MIN);
-    Ints slot;
-    for (int i = 0; i < W; ++i) slot[i] = i;
     Ints place{};
 #pragma GCC unroll 8
     for (int j = 0; j < W; ++j) {
         Ints other = key[j] - Ints{};
         // -1 where lane j waits below: farther, or as near and in an earlier slot.
-        place -= (other > key) | ((other == key) & (j < slot));
+        place -= (other > key) | ((other == key) & (j < laneIndices<W>()));
     }
     return place;
 }
@@ -169,10 +167,9 @@ int nearestSlot(const ChildHits<W>& hits) {
     using Ints = SimdMask<W>;
     const Ints key = orderedKeys<W>(hits, INT32_MAX);
     Ints smallest = key;
+#pragma GCC unroll 3
     for (int step = W / 2; step > 0; step /= 2) {
-        Ints index;
-        for (int i = 0; i < W; ++i) index[i] = i ^ step;
-        Ints swapped = __builtin_shuffle(smallest, index);
+        Ints swapped = __builtin_shuffle(smallest, laneIndices<W>() ^ step);  // lane i gets lane i ^ step
         smallest = swapped < smallest ? swapped : smallest;
     }
     return std::bit_width(laneBits<W>(key == smallest)) - 1;
