@@ -117,6 +117,11 @@ WideBvh<8> embreeTree(const PrimitiveSet& primitives, int maxLeaf) {
     args.setNodeBounds = setBounds;
     args.createLeaf = createLeaf;
     const auto* root = static_cast<const BuiltNode*>(rtcBuildBVH(&args));
+    if (!root) {
+        rtcReleaseBVH(bvh);
+        rtcReleaseDevice(device);
+        throw Error("embree: rtcBuildBVH failed");
+    }
 
     WideBvh<8> wide;
     wide.nodes.resize(1);
