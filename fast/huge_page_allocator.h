@@ -28,6 +28,9 @@ template <typename T>
 struct HugePageAllocator {
     using value_type = T;
     static constexpr size_t kHugePage = size_t(2) << 20;
+    // Small arrays start on a cache line too: a block of mixed records (the wide BVH's nodes
+    // and packets, WideBvhArrays) places 64-byte-aligned nodes at even offsets from its start.
+    static constexpr std::align_val_t kSmallAlignment{alignof(T) > 64 ? alignof(T) : 64};
 
     HugePageAllocator() = default;
     template <typename U>
@@ -35,7 +38,7 @@ struct HugePageAllocator {
 
     T* allocate(size_t n) {
         size_t bytes = n * sizeof(T);
-        if (bytes < kHugePage) return static_cast<T*>(::operator new(bytes, std::align_val_t(alignof(T))));
+        if (bytes < kHugePage) return static_cast<T*>(::operator new(bytes, kSmallAlignment));
         size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
         void* memory = std::aligned_alloc(kHugePage, rounded);
         if (!memory) throw std::bad_alloc();
@@ -47,7 +50,7 @@ struct HugePageAllocator {
 
     void deallocate(T* p, size_t n) {
         if (n * sizeof(T) < kHugePage)
-            ::operator delete(p, std::align_val_t(alignof(T)));
+            ::operator delete(p, kSmallAlignment);
         else
             std::free(p);
     }
