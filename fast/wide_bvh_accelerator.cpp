@@ -23,9 +23,10 @@ void WideBvhAccelerator<W>::build(const PrimitiveSet& primitives) {
     WideBvh<W> wide = primitives.size() == 0 ? WideBvh<W>{} : makeTree_(primitives);
 
     // One block of memory: each node, then its leaves' packets of four, so that a leaf is read
-    // from the lines after its parent's (WideBvhArrays). A sphere takes a lane with no triangle
-    // and is tested on its own. Every node's place is counted first, so the nodes can be written
-    // on several threads, each byte once.
+    // from the lines after its parent's (WideBvhArrays). The block starts on a cache line
+    // (HugePageAllocator), so nodes at even units are 64-byte aligned. A sphere takes a lane
+    // with no triangle and is tested on its own. Every node's place is counted first, so the
+    // nodes can be written on several threads, each byte once.
     constexpr uint32_t kNodeUnits = sizeof(WideBvhNode<W>) / kTreeUnit;
     constexpr uint32_t kPacketUnits = sizeof(TrianglePacket) / kTreeUnit;
     static_assert(sizeof(WideBvhNode<W>) % kTreeUnit == 0 && sizeof(TrianglePacket) % kTreeUnit == 0);
