@@ -86,5 +86,15 @@ V roundedAsIs(V value) {
     return value;
 }
 
+// -value, broadcast to N lanes, for writing p - value as p + negated: the same IEEE operation
+// (x - y is defined as x + (-y)), signed zeros and NaNs included. An addition takes its
+// memory operand on either side, so an AVX build folds the row's load into it; SUBPS can take
+// only the subtrahend from memory. The negation is made opaque: GCC would turn x + (-y) back
+// into x - y.
+template <int N>
+Simd<float, N> broadcastNegated(float value) {
+    return broadcast<N>(roundedAsIs(-value));
+}
+
 RTLAB_ISA_NAMESPACE_END
 }  // namespace rtlab

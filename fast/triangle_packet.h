@@ -96,9 +96,11 @@ public:
         int kz = (1 - xLargest) * (2 - int(absY >= absZ));
         int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
         axis_ = {kx, ky, kz};
+        // a0 reports no hit where dz is 0. That is a zero direction (dz is its largest
+        // component), so sx and sy are 0 / 0, NaN, and so is every lane's t, which then fails
+        // t > tMin: such a ray needs no test of its own.
         float dz = direction[kz];
-        valid_ = dz != 0.0f;  // false for a zero-length or NaN direction
-        for (int i = 0; i < 3; ++i) origin_[i] = broadcast<4>(origin[axis_[i]]);
+        for (int i = 0; i < 3; ++i) negatedOrigin_[i] = broadcastNegated<4>(origin[axis_[i]]);
         sx_ = broadcast<4>(-direction[kx] / dz);
         sy_ = broadcast<4>(-direction[ky] / dz);
         sz_ = broadcast<4>(1.0f / dz);
@@ -132,14 +134,13 @@ private:
 
     // The test itself, lane by lane: which lanes are hit, and where.
     LaneHits test(const TrianglePacket& packet, float tMax) const {
-        if (!valid_) return LaneHits::none();
         // Vertex coordinates relative to the ray origin, in the permuted axes (x, y, z) = (kx,
         // ky, kz): a row load each.
         Lanes a[3], b[3], c[3];
         for (int i = 0; i < 3; ++i) {
-            a[i] = load<4>(packet.coordinate[axis_[i]][0]) - origin_[i];
-            b[i] = load<4>(packet.coordinate[axis_[i]][1]) - origin_[i];
-            c[i] = load<4>(packet.coordinate[axis_[i]][2]) - origin_[i];
+            a[i] = load<4>(packet.coordinate[axis_[i]][0]) + negatedOrigin_[i];
+            b[i] = load<4>(packet.coordinate[axis_[i]][1]) + negatedOrigin_[i];
+            c[i] = load<4>(packet.coordinate[axis_[i]][2]) + negatedOrigin_[i];
         }
         Lanes ax = a[0] + sx_ * a[2], ay = a[1] + sy_ * a[2];
         Lanes bx = b[0] + sx_ * b[2], by = b[1] + sy_ * b[2];
@@ -178,18 +179,20 @@ private:
     //    underflow). |p - q| > 2^-60 rules that out: then p or q is above 2^-62, and a*b and
     //    c*d, if not equal, differ by at least 2^-110, which stays nonzero as a float.
     // Infinite and NaN values compare false: not ruled out.
+    //
+    // One edge negative and another positive is the smallest of the three values below -floor
+    // and the largest above floor (a MINPS and a MAXPS each, not six comparisons). Each ?: keeps
+    // one of its operands, so a smallest below -floor is an edge's own value; a NaN can only
+    // hide a sign, and so leave a lane to the exact test, never rule one out.
     static Mask surelyOutside(Lanes a0, Lanes b0, Lanes c0, Lanes d0, Lanes a1, Lanes b1, Lanes c1, Lanes d1,
                               Lanes a2, Lanes b2, Lanes c2, Lanes d2) {
-        struct Sign {
-            Mask negative, positive;
-        };
-        auto sign = [](Lanes a, Lanes b, Lanes c, Lanes d) {
-            const Lanes value = roundedAsIs(a * b) - roundedAsIs(c * d);
-            const Lanes floor = broadcast<4>(0x1p-60f);
-            return Sign{value < -floor, value > floor};
-        };
-        const Sign s0 = sign(a0, b0, c0, d0), s1 = sign(a1, b1, c1, d1), s2 = sign(a2, b2, c2, d2);
-        return (s0.negative | s1.negative | s2.negative) & (s0.positive | s1.positive | s2.positive);
+        auto value = [](Lanes a, Lanes b, Lanes c, Lanes d) { return roundedAsIs(a * b) - roundedAsIs(c * d); };
+        const Lanes v0 = value(a0, b0, c0, d0), v1 = value(a1, b1, c1, d1), v2 = value(a2, b2, c2, d2);
+        Lanes smallest = v1 < v0 ? v1 : v0, largest = v1 > v0 ? v1 : v0;
+        smallest = v2 < smallest ? v2 : smallest;
+        largest = v2 > largest ? v2 : largest;
+        const Lanes floor = broadcast<4>(0x1p-60f);
+        return (smallest < -floor) & (largest > floor);
     }
 
     // a*b - c*d per lane with the exact sign, as float_bits.h's differenceOfProducts: the
@@ -217,10 +220,9 @@ private:
     }
 
     std::array<int, 3> axis_;
-    Lanes origin_[3];
+    Lanes negatedOrigin_[3];  // see broadcastNegated
     Lanes sx_, sy_, sz_;
     Lanes tMin_;
-    bool valid_;
 };
 
 RTLAB_ISA_NAMESPACE_END

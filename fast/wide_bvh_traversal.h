@@ -58,7 +58,7 @@ constexpr float kFarScale = 1.0f + 2.0f * gamma(3);
 // What the W-wide slab test needs per ray, each value broadcast to all lanes.
 template <int W>
 struct WideRay {
-    Lanes<W> origin[3];
+    Lanes<W> negatedOrigin[3];  // -origin: (p - o) is computed as (p + -o), see broadcastNegated
     Lanes<W> invDirection[3];
     // The reciprocal times kFarScale, for the far planes. a0 rounds four times and then
     // scales: (p - o), 1 / d, the product, the product with kFarScale. This rounds four times
@@ -80,7 +80,7 @@ struct WideRay {
 #pragma GCC unroll 3
         for (int axis = 0; axis < 3; ++axis) {
             const float reciprocal = 1.0f / d[axis];
-            origin[axis] = broadcast<W>(o[axis]);
+            negatedOrigin[axis] = broadcastNegated<W>(o[axis]);
             invDirection[axis] = broadcast<W>(reciprocal);
             farInvDirection[axis] = broadcast<W>(reciprocal * kFarScale);
             bool negative = std::signbit(d[axis]);
@@ -104,8 +104,8 @@ template <int W>
 ChildHits<W> intersectChildren(const WideBvhNode<W>& node, const WideRay<W>& ray, float tMax) {
     Lanes<W> tNear = ray.tMin, tFar = broadcast<W>(tMax);
     for (int axis = 0; axis < 3; ++axis) {
-        Lanes<W> t0 = (load<W>(node.planes[ray.nearRow[axis]]) - ray.origin[axis]) * ray.invDirection[axis];
-        Lanes<W> t1 = (load<W>(node.planes[ray.farRow[axis]]) - ray.origin[axis]) * ray.farInvDirection[axis];
+        Lanes<W> t0 = (load<W>(node.planes[ray.nearRow[axis]]) + ray.negatedOrigin[axis]) * ray.invDirection[axis];
+        Lanes<W> t1 = (load<W>(node.planes[ray.farRow[axis]]) + ray.negatedOrigin[axis]) * ray.farInvDirection[axis];
         // A NaN distance (0 * inf: the origin on a slab plane, direction 0 on that axis) fails
         // the comparison and leaves the interval as it was. This is max and min (MAXPS/MINPS).
         tNear = t0 > tNear ? t0 : tNear;

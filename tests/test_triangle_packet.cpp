@@ -200,3 +200,16 @@ TEST_CASE("padding repeats the last triangle, and a lane of no triangle is never
     packet.pad(0, false);
     CHECK_FALSE(ShearedRay(ray).anyHit(packet, kInfinity));
 }
+
+TEST_CASE("a ray of zero direction hits nothing, as in a0, with the origin inside every triangle") {
+    // The packet test has no branch for it (ShearedRay): the shear's 0 / 0 makes every t NaN.
+    const std::array<Triangle, 4> triangles{Triangle{Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(0, 1, 0)},
+                                            Triangle{Vec3(-1, -1, 0), Vec3(0, 1, 0), Vec3(1, -1, 0)},
+                                            Triangle{Vec3(0, -1, -1), Vec3(0, -1, 1), Vec3(0, 1, 0)},
+                                            Triangle{Vec3(-1, 0, -1), Vec3(1, 0, -1), Vec3(0, 0, 1)}};
+    for (const Vec3 zero : {Vec3(0.0f), Vec3(-0.0f), Vec3(0.0f, -0.0f, 0.0f)}) {
+        const Ray ray{Vec3(0.0f), zero, -kInfinity, kInfinity};
+        CHECK(difference(ray, triangles).empty());
+        CHECK(loopOver(ray, triangles).lane < 0);
+    }
+}
