@@ -186,8 +186,7 @@ int nearestSlot(const ChildHits<W>& hits) {
 // or more. Sorting three children by waitingPlaces too cost 3-6 % on the engine's primary
 // rays (docs/performance.md, "What each step gained").
 template <int W>
-inline StackEntry nearestChild(const WideBvhNode<W>& node, const ChildHits<W>& hits, unsigned mask, StackEntry* stack,
-                               int& stackSize) {
+inline StackEntry nearestChild(const WideBvhNode<W>& node, const ChildHits<W>& hits, unsigned mask, StackEntry*& top) {
     auto entry = [&node](int slot, float tEnter) { return StackEntry{node.child[slot], node.primCount[slot], tEnter}; };
     int first = std::countr_zero(mask);
     unsigned rest = mask & (mask - 1);
@@ -199,12 +198,12 @@ inline StackEntry nearestChild(const WideBvhNode<W>& node, const ChildHits<W>& h
     if ((rest & (rest - 1)) == 0) {
         bool firstNearer = tEnter[first] < tEnter[second];
         int nearer = firstNearer ? first : second, farther = firstNearer ? second : first;
-        stack[stackSize++] = entry(farther, tEnter[farther]);
+        *top++ = entry(farther, tEnter[farther]);
         return entry(nearer, tEnter[nearer]);
     }
-    StackEntry* out = stack + stackSize;
+    StackEntry* out = top;
     const int count = std::popcount(mask);
-    stackSize += count - 1;
+    top += count - 1;
     if (count == 3) {
         for (int i = 0; mask != 0; mask &= mask - 1, ++i) {
             int slot = std::countr_zero(mask);
@@ -248,7 +247,7 @@ Hit closestHit(const WideBvhArrays<W>& tree, const Ray& ray, TraversalStats& sta
     const ShearedRay shearedRay(ray);
     uint64_t nodeVisits = 0, primitiveTests = 0;
     StackEntry stack[kStackSize<W>];
-    int stackSize = 0;
+    StackEntry* top = stack;
     StackEntry current{0, 0, ray.tMin};
     for (;;) {
         if (!(current.ref & kLeafFlag)) {
@@ -256,7 +255,7 @@ Hit closestHit(const WideBvhArrays<W>& tree, const Ray& ray, TraversalStats& sta
             ++nodeVisits;
             ChildHits<W> hits = intersectChildren<W>(node, wideRay, hit.t);
             if (unsigned mask = laneBits<W>(hits.hit); mask != 0) {
-                current = nearestChild<W>(node, hits, mask, stack, stackSize);
+                current = nearestChild<W>(node, hits, mask, top);
                 continue;
             }
         } else {
@@ -271,13 +270,13 @@ Hit closestHit(const WideBvhArrays<W>& tree, const Ray& ray, TraversalStats& sta
         }
         // Next waiting child, skipping those that start beyond the closest hit so far.
         do {
-            if (stackSize == 0) {
+            if (top == stack) {
                 stats.nodeVisits += nodeVisits;
                 stats.primitiveTests += primitiveTests;
                 if (!hit.found()) hit.t = kInfinity;
                 return hit;
             }
-            current = stack[--stackSize];
+            current = *--top;
         } while (current.tEnter > hit.t);
     }
 }
@@ -293,7 +292,7 @@ bool anyHit(const WideBvhArrays<W>& tree, const Ray& ray, TraversalStats& stats)
     // the last slot to the first (as Embree does). Visiting the first slot first cost 8 % on
     // the sphereflake's shadow rays; visiting the nearest first, 2-11 % on every scene.
     StackEntry stack[kStackSize<W>];
-    int stackSize = 0;
+    StackEntry* top = stack;
     StackEntry current{0, 0, 0.0f};
     for (;;) {
         if (!(current.ref & kLeafFlag)) {
@@ -305,7 +304,7 @@ bool anyHit(const WideBvhArrays<W>& tree, const Ray& ray, TraversalStats& stats)
                 current = StackEntry{node.child[last], node.primCount[last], 0.0f};
                 for (mask &= ~(1u << last); mask != 0; mask &= mask - 1) {
                     int slot = std::countr_zero(mask);
-                    stack[stackSize++] = StackEntry{node.child[slot], node.primCount[slot], 0.0f};
+                    *top++ = StackEntry{node.child[slot], node.primCount[slot], 0.0f};
                 }
                 continue;
             }
@@ -321,8 +320,8 @@ bool anyHit(const WideBvhArrays<W>& tree, const Ray& ray, TraversalStats& stats)
                 }
             }
         }
-        if (blocked || stackSize == 0) break;
-        current = stack[--stackSize];
+        if (blocked || top == stack) break;
+        current = *--top;
     }
     stats.nodeVisits += nodeVisits;
     stats.primitiveTests += primitiveTests;
