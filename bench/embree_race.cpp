@@ -148,7 +148,7 @@ RaceResult runRace(const RaceOptions& options) {
         AcceleratorSpec spec;
         spec.name = result.accelerator;
         RtlabSystem ours(primitives, spec);
-        EmbreeSystem embree(scene, EmbreeQuality::Medium);
+        EmbreeSystem embree(scene, EmbreeQuality::Medium, options.embreeIsa);
 
         for (int threads : {1, 2}) result.rows.push_back(raceBuilds(sceneName, threads, options, ours, embree));
         result.memory.push_back({sceneName, ours.bytesPerTriangle(), embree.bytesPerTriangle()});
@@ -213,7 +213,8 @@ void writeRaceMarkdown(std::ostream& out, const RaceResult& result) {
     const RaceOptions& o = result.options;
     // Which copy of fast/'s wide traversal ran (fast/wide_bvh_dispatch.h): Embree picks its ISA
     // at run time, and a portable build does too.
-    out << "rtlab:" << result.accelerator << (usesAvx2Copy() ? " (its AVX2 copy)" : "") << " against embree:medium, " << o.rounds
+    out << "rtlab:" << result.accelerator << (usesAvx2Copy() ? " (its AVX2 copy)" : "") << " against embree:medium"
+        << (o.embreeIsa.empty() ? "" : " (its kernels held to " + o.embreeIsa + ")") << ", " << o.rounds
         << " alternating rounds" << (o.rayStride > 1 ? ", every " + std::to_string(o.rayStride) + "th ray" : "")
         << "; load average " << result.loadAtStart << " at the start, " << result.loadAtEnd << " at the end.\n\n"
         << "| scene | query | threads | ours (median) | Embree (median) | ratio: median | min–max | mismatches |\n"

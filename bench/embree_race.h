@@ -23,6 +23,7 @@ struct RaceOptions {
     std::vector<std::string> scenes;  // default: bunny, engine, sphereflake
     std::string accelerator;          // default: the fastest structure (fastestAcceleratorType)
     std::string modelsDir;
+    std::string embreeIsa;            // default: the best Embree finds on this CPU
     int rounds = 7;                   // at least 5
     double roundSeconds = 0.25;       // per side and round
     size_t rayStride = 1;             // every rayStride-th ray (--quick: 16)

@@ -5,10 +5,12 @@
 #include <chrono>
 #include <cstring>
 #include <string>
+#include <utility>
 
 namespace rtlab::bench {
 
-EmbreeSystem::EmbreeSystem(const Scene& scene, EmbreeQuality quality) : scene_(scene), quality_(quality) {}
+EmbreeSystem::EmbreeSystem(const Scene& scene, EmbreeQuality quality, std::string isa)
+    : scene_(scene), quality_(quality), isa_(std::move(isa)) {}
 
 EmbreeSystem::~EmbreeSystem() {
     if (rtcScene_) rtcReleaseScene(rtcScene_);
@@ -25,6 +27,7 @@ void EmbreeSystem::useDevice(int threads) {
     rtcScene_ = nullptr;
     if (device_) rtcReleaseDevice(device_);
     std::string config = "threads=" + std::to_string(threads) + ",set_affinity=0";
+    if (!isa_.empty()) config += ",isa=" + isa_;
     device_ = rtcNewDevice(config.c_str());
     if (!device_) throw Error("embree: rtcNewDevice(\"" + config + "\") failed");
     deviceThreads_ = threads;

@@ -10,6 +10,7 @@
 #include <embree3/rtcore.h>
 
 #include <atomic>
+#include <string>
 
 namespace rtlab::bench {
 
@@ -17,7 +18,9 @@ enum class EmbreeQuality { Medium, High };
 
 class EmbreeSystem final : public BenchSystem {
 public:
-    EmbreeSystem(const Scene& scene, EmbreeQuality quality);
+    // isa, if not empty, caps the kernels Embree picks at run time (its device setting isa=,
+    // e.g. "avx2"); empty lets it take the best this CPU runs.
+    EmbreeSystem(const Scene& scene, EmbreeQuality quality, std::string isa = {});
     ~EmbreeSystem() override;
     EmbreeSystem(const EmbreeSystem&) = delete;
     EmbreeSystem& operator=(const EmbreeSystem&) = delete;
@@ -37,6 +40,7 @@ private:
 
     const Scene& scene_;
     EmbreeQuality quality_;
+    std::string isa_;
     int deviceThreads_ = 0;
     RTCDevice device_ = nullptr;
     RTCScene rtcScene_ = nullptr;

@@ -176,6 +176,10 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--race-accel", options.race.accelerator,
                    "The rtlab accelerator of the race (default: the fastest, " + defaultRenderAccelerator() + ")");
+    app.add_option("--embree-isa", options.race.embreeIsa,
+                   "Hold Embree's kernels in that race to this instruction set (by default it takes the best this "
+                   "CPU runs, AVX-512 where there is one)")
+        ->check(CLI::IsMember({"sse2", "sse4.2", "avx", "avx2", "avx512"}));
     app.add_flag("--no-convergence", options.skipConvergence, "Skip image error against samples per pixel");
     app.add_flag("--no-parameters", options.skipParameters, "Skip the bucket count / leaf size sweep");
     app.add_flag("--no-estimators", options.skipEstimators, "Skip the estimators of direct light (a6) against each other");
