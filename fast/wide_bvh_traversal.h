@@ -62,6 +62,15 @@ using Lanes = Simd<float, W>;
 // docs/conventions.md).
 constexpr float kFarScale = 1.0f + 2.0f * gamma(3);
 
+// Whether this copy can take the maximum and minimum of the slab distances as integers
+// (intersectChildrenAsIntegers): SSE4.1's PMAXSD and PMINSD, and AVX2's for eight lanes. On x86 0 * inf is
+// the negative NaN the argument there relies on.
+#if defined(__SSE4_1__) && (defined(__x86_64__) || defined(__i386__))
+constexpr bool kIntegerSlabs = true;
+#else
+constexpr bool kIntegerSlabs = false;
+#endif
+
 // What the W-wide slab test needs per ray, each value broadcast to all lanes.
 template <int W>
 struct WideRay {
@@ -97,6 +106,27 @@ struct WideRay {
     }
 };
 
+// Whether the slab test may order a ray's distances as integers (intersectChildrenAsIntegers):
+// the segment starts at +0 or later, and no distance can be NaN. A plane minus a finite origin
+// is finite or infinite, and times a finite nonzero reciprocal (of a direction component at
+// least 2^-125 in magnitude, so that it does not overflow, even enlarged by kFarScale) it stays
+// so: 0 * inf, the only NaN of a0's slab test, cannot occur. The ray's eight floats are checked
+// as one vector of integers, with one branch.
+inline bool distancesOrderAsIntegers(const Ray& ray) {
+    static_assert(sizeof(Ray) == 8 * sizeof(float) && offsetof(Ray, direction) == 3 * sizeof(float) &&
+                  offsetof(Ray, tMin) == 6 * sizeof(float) && offsetof(Ray, tMax) == 7 * sizeof(float));
+    using Ints = SimdMask<8>;
+    Ints bits;
+    std::memcpy(&bits, &ray, sizeof bits);
+    constexpr int32_t kLargest = 0x7f7fffff, kInfinityBits = 0x7f800000, kTiny = 0x01000000;  // 2^-125
+    // Origin and direction by magnitude; tMin and tMax with their sign bit, so that -0 and
+    // negative values fall below +0.
+    const Ints value = bits & Ints{0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff, -1, -1};
+    const Ints lowest{0, 0, 0, kTiny, kTiny, kTiny, 0, 0};
+    const Ints highest{kLargest, kLargest, kLargest, kLargest, kLargest, kLargest, kInfinityBits, kInfinityBits};
+    return (laneBits<8>((value < lowest) | (value > highest)) == 0) & (ray.tMax >= ray.tMin);
+}
+
 // The slab test of a0 on W boxes at once: per child, where the ray enters its box and whether
 // the segment (tMin, tMax] touches it. The near distances are a0's arithmetic exactly; the far
 // ones are enlarged as a0 enlarges them, with the factor folded into the reciprocal once per
@@ -105,20 +135,58 @@ template <int W>
 struct ChildHits {
     Lanes<W> tEnter;
     SimdMask<W> hit;
+    bool undecided = false;  // by the integer test (intersectChildrenAsIntegers)
 };
 
+// a0's slab test, in float: a NaN distance (0 * inf: the origin on a slab plane, direction 0
+// on that axis) fails the comparison and leaves the interval as it was. This is max and min
+// (MAXPS/MINPS).
 template <int W>
-ChildHits<W> intersectChildren(const WideBvhNode<W>& node, const WideRay<W>& ray, float tMax) {
+ChildHits<W> intersectChildrenAsFloats(const WideBvhNode<W>& node, const WideRay<W>& ray, float tMax) {
     Lanes<W> tNear = ray.tMin, tFar = broadcast<W>(tMax);
     for (int axis = 0; axis < 3; ++axis) {
         Lanes<W> t0 = (load<W>(node.planes[ray.nearRow[axis]]) + ray.negatedOrigin[axis]) * ray.invDirection[axis];
         Lanes<W> t1 = (load<W>(node.planes[ray.farRow[axis]]) + ray.negatedOrigin[axis]) * ray.farInvDirection[axis];
-        // A NaN distance (0 * inf: the origin on a slab plane, direction 0 on that axis) fails
-        // the comparison and leaves the interval as it was. This is max and min (MAXPS/MINPS).
         tNear = t0 > tNear ? t0 : tNear;
         tFar = t1 < tFar ? t1 : tFar;
     }
     return {tNear, tNear <= tFar};
+}
+
+// The same distances, their maximum, minimum and comparison taken on their bits as signed
+// integers: one cycle each where MAXPS, MINPS and CMPPS take four, on the chain from a node's
+// load to its hit mask (docs/performance.md, "What each step gained"). The answer is the float
+// test's, bit for bit, for a ray distancesOrderAsIntegers accepts:
+//  * No distance is NaN, and tMin, tMax and hit.t are +0 or above. Floats with a clear sign
+//    bit order as their bits do, equal ones have equal bits, and every float with the sign bit
+//    set (-0 included) is below them all as an integer.
+//  * So the maximum is the float maximum: both are at least tMin, and no distance with the sign
+//    bit set is above it either way.
+//  * A far distance with the sign bit set ends the interval before tNear in float, so the box
+//    is missed, unless it is -0 and tNear is +0. As an integer -0 is the smallest of all: then
+//    it hides any negative distance, and misses the box where float hits it. Such a node (the
+//    origin on the plane the ray leaves a box by; the minimum is -0 exactly then) is marked
+//    undecided, and the walk starts the ray again with the float test.
+template <int W>
+ChildHits<W> intersectChildrenAsIntegers(const WideBvhNode<W>& node, const WideRay<W>& ray, float tMax) {
+    using Ints = SimdMask<W>;
+    Ints tNear = std::bit_cast<Ints>(ray.tMin), tFar = std::bit_cast<Ints>(broadcast<W>(tMax));
+    for (int axis = 0; axis < 3; ++axis) {
+        Ints t0 = std::bit_cast<Ints>((load<W>(node.planes[ray.nearRow[axis]]) + ray.negatedOrigin[axis]) *
+                                      ray.invDirection[axis]);
+        Ints t1 = std::bit_cast<Ints>((load<W>(node.planes[ray.farRow[axis]]) + ray.negatedOrigin[axis]) *
+                                      ray.farInvDirection[axis]);
+        tNear = t0 > tNear ? t0 : tNear;
+        tFar = t1 < tFar ? t1 : tFar;
+    }
+    return {std::bit_cast<Lanes<W>>(tNear), tNear <= tFar, laneBits<W>(tFar == Ints{} + INT32_MIN) != 0};
+}
+
+// The slab test of a0 on W boxes: as integers, or in float for the rays that need it.
+template <int W, bool kAsIntegers>
+ChildHits<W> intersectChildren(const WideBvhNode<W>& node, const WideRay<W>& ray, float tMax) {
+    if constexpr (kAsIntegers) return intersectChildrenAsIntegers<W>(node, ray, tMax);
+    return intersectChildrenAsFloats<W>(node, ray, tMax);
 }
 
 // How many packets a leaf of primCount primitives fills.
@@ -245,8 +313,8 @@ inline bool intersectSpheres(const PrimitiveSet& primitives, const TrianglePacke
 // The traversals, each compiled twice: with kSpheres false (the scene is all triangles) the
 // loop makes no calls, so its SIMD registers need not be saved around them. Node visits count
 // wide nodes (W box tests each).
-template <int W, bool kSpheres>
-Hit closestHit(const WideBvhArrays<W>& tree, const Ray& ray, TraversalStats& stats) {
+template <int W, bool kSpheres, bool kAsIntegers>
+Hit closestHitWalk(const WideBvhArrays<W>& tree, const Ray& ray, TraversalStats& stats) {
     Hit hit;
     hit.t = ray.tMax;
 
@@ -264,7 +332,9 @@ Hit closestHit(const WideBvhArrays<W>& tree, const Ray& ray, TraversalStats& sta
             // miss with theirs.
             __builtin_prefetch(node.child);
             ++nodeVisits;
-            ChildHits<W> hits = intersectChildren<W>(node, wideRay, hit.t);
+            ChildHits<W> hits = intersectChildren<W, kAsIntegers>(node, wideRay, hit.t);
+            if (hits.undecided) [[unlikely]]
+                return closestHitWalk<W, kSpheres, false>(tree, ray, stats);
             if (unsigned mask = laneBits<W>(hits.hit); mask != 0) {
                 current = nearestChild<W>(node, hits, mask, top);
                 // The child waiting on top is the likeliest to be visited after this one.
@@ -294,8 +364,8 @@ Hit closestHit(const WideBvhArrays<W>& tree, const Ray& ray, TraversalStats& sta
     }
 }
 
-template <int W, bool kSpheres>
-bool anyHit(const WideBvhArrays<W>& tree, const Ray& ray, TraversalStats& stats) {
+template <int W, bool kSpheres, bool kAsIntegers>
+bool anyHitWalk(const WideBvhArrays<W>& tree, const Ray& ray, TraversalStats& stats) {
     const WideRay<W> wideRay(ray);
     const ShearedRay shearedRay(ray);
     uint64_t nodeVisits = 0, primitiveTests = 0;
@@ -312,7 +382,9 @@ bool anyHit(const WideBvhArrays<W>& tree, const Ray& ray, TraversalStats& stats)
             const WideBvhNode<W>& node = tree.node(current.ref);
             __builtin_prefetch(node.child);  // as in closestHit
             ++nodeVisits;
-            ChildHits<W> hits = intersectChildren<W>(node, wideRay, ray.tMax);
+            ChildHits<W> hits = intersectChildren<W, kAsIntegers>(node, wideRay, ray.tMax);
+            if (hits.undecided) [[unlikely]]
+                return anyHitWalk<W, kSpheres, false>(tree, ray, stats);
             if (unsigned mask = laneBits<W>(hits.hit); mask != 0) {
                 int last = std::bit_width(mask) - 1;
                 current = StackEntry{node.child[last], node.primCount[last], 0.0f};
@@ -341,6 +413,22 @@ bool anyHit(const WideBvhArrays<W>& tree, const Ray& ray, TraversalStats& stats)
     stats.nodeVisits += nodeVisits;
     stats.primitiveTests += primitiveTests;
     return blocked;
+}
+
+// The two queries: each walk compiled twice, so that the choice of slab test is made once per
+// ray, not at every node (which cost more than the integer test gained).
+template <int W, bool kSpheres>
+Hit closestHit(const WideBvhArrays<W>& tree, const Ray& ray, TraversalStats& stats) {
+    if constexpr (kIntegerSlabs)
+        if (distancesOrderAsIntegers(ray)) return closestHitWalk<W, kSpheres, true>(tree, ray, stats);
+    return closestHitWalk<W, kSpheres, false>(tree, ray, stats);
+}
+
+template <int W, bool kSpheres>
+bool anyHit(const WideBvhArrays<W>& tree, const Ray& ray, TraversalStats& stats) {
+    if constexpr (kIntegerSlabs)
+        if (distancesOrderAsIntegers(ray)) return anyHitWalk<W, kSpheres, true>(tree, ray, stats);
+    return anyHitWalk<W, kSpheres, false>(tree, ray, stats);
 }
 
 }  // namespace
