@@ -79,7 +79,10 @@ std::vector<ThroughputRecord> runThroughput(const ThroughputOptions& options) {
             raySets.push_back({kind, benchRays(kind, bounds, options.rayStride), {}, {}});
 
         // Embree MEDIUM first: every other row is compared with its hits and its speed.
+        // Rows named with settings of their own (--accel fastbvh:leaf=4) come last.
         std::vector<std::string> labels = allSystemLabels();
+        for (const std::string& label : options.systems)
+            if (std::find(labels.begin(), labels.end(), label) == labels.end()) labels.push_back(label);
         std::stable_partition(labels.begin(), labels.end(), [](const std::string& l) { return l == "embree:medium"; });
         for (const std::string& label : labels) {
             bool isReference = label == "embree:medium";

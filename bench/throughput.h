@@ -14,7 +14,7 @@ namespace rtlab::bench {
 
 struct ThroughputOptions {
     std::vector<std::string> scenes;
-    std::vector<std::string> systems;  // labels to run; empty = all
+    std::vector<std::string> systems;  // labels to run (rtlab: may be followed by any spec); empty = all
     int maxLeaf = 4;                   // --max-leaf of every rtlab row
     std::string modelsDir;
     size_t rayStride = 1;              // trace every rayStride-th ray (--quick: 16)

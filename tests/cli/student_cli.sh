@@ -1,7 +1,7 @@
 #!/bin/bash
 # What a student types, as issue 12 asked for it: an unknown command is named with the list of
 # commands, bad ray files and scenes get one line naming the file, `bench --help` is called
-# `rtlab bench`, and a default render stopped by a stub says which file to fill in.
+# `rtlab bench`, bench's --accel takes settings, and a default render stopped by a stub says which file to fill in.
 # Usage: student_cli.sh BUILD_DIR SOURCE_DIR
 set -u
 build=$1
@@ -42,6 +42,13 @@ one_line "broken.glb: not a binary glTF" "a garbage .glb"
 run 0 "bench --help" "$solution" bench --help
 grep -q "rtlab-solution bench" "$work/stdout" || fail "bench --help does not name rtlab-solution bench"
 grep -q "rtlab-solution-bench" "$work/stdout" && fail "bench --help names the executable rtlab-solution-bench"
+# bench --accel takes a structure with settings of its own, as render and hits do, and names
+# what is wrong with one it cannot make.
+run 0 "bench --accel with a setting" "$solution" bench --quick --scenes bunny --accel fastbvh:bins=8 \
+  --no-race --no-convergence --no-parameters --no-estimators --no-render
+grep -qE '^\| rtlab:fastbvh:bins=8 \| [0-9.]+ \|' "$work/stdout" || fail "bench --accel fastbvh:bins=8 measured no row of its own"
+run 1 "bench --accel with a setting out of range" "$solution" bench --accel fastbvh:bins=99
+one_line "--accel fastbvh:bins=99: bins must be" "bench --accel with a setting out of range"
 
 # The student binary of this repository has every stub unfilled: a default render stops in
 # a0 or a1 (no accelerator avoids those) with exit 3 and the stub's file, not in a2.
