@@ -1,41 +1,26 @@
 #include "grader/engine/stub_object_cache.h"
 
-#include "framework/core/sha256.h"
-
-#include <unistd.h>
+#include "grader/engine/cache_files.h"
 
 #include <filesystem>
 #include <fstream>
-#include <set>
 
 namespace rtlab::grader {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string readAll(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 // Everything the object depends on: the toolchain, every stub and every header, with their
-// paths, each length-prefixed so that no two different inputs run together into one text.
+// paths.
 std::string cacheKey(const StubObjectRequest& request) {
-    std::string text;
-    auto add = [&](const std::string& part) { text += std::to_string(part.size()) + ":" + part; };
-    add(request.toolchain.dump());
+    ContentKey key;
+    key.add(request.toolchain.dump());
     for (const auto& [path, contents] : request.stubs) {
-        add(path);
-        add(contents);
+        key.add(path);
+        key.add(contents);
     }
-    std::set<fs::path> headers;
-    for (const auto& entry : fs::recursive_directory_iterator(request.headersDir))
-        if (entry.is_regular_file()) headers.insert(entry.path());
-    for (const fs::path& header : headers) {
-        add(header.lexically_relative(request.headersDir).string());
-        add(readAll(header));
-    }
-    return sha256Hex(text);
+    key.addFolder(request.headersDir);
+    return key.digest();
 }
 
 }  // namespace
@@ -74,14 +59,7 @@ std::string compiledStubObject(const StubObjectRequest& request, std::string* wh
         *why = "the committed stubs did not compile: " + (result.output.empty() ? result.failure : result.output);
         return "";
     }
-    // Another grader may be filling the same entry: a rename is atomic, and either copy is right.
-    const fs::path temporary = cached.string() + "." + std::to_string(getpid()) + ".tmp";
-    fs::copy_file(built, temporary, fs::copy_options::overwrite_existing, error);
-    if (!error) fs::rename(temporary, cached, error);
-    if (error) {
-        fs::remove(temporary, error);
-        return built.string();  // this run can still use it
-    }
+    if (!publishCopy(built, cached)) return built.string();  // this run can still use it
     return cached.string();
 }
 

@@ -154,13 +154,16 @@ SubmissionBuild buildSubmission(const std::string& submissionDir, const std::str
     }
     build.fromSubmission = mergeSources(submission, stubs, host.sources);
 
-    WorkerCompile compile = compileWorker(sandbox, host, toolchain, processLimits);
+    WorkerCompile compile =
+        compileWorker(sandbox, host, toolchain, processLimits, (fs::path(toolchainPath).parent_path() / "unit-objects").string());
     build.log = compile.log;
     if (compile.droppedBytes > 0) build.log += "\n[" + std::to_string(compile.droppedBytes) + " more bytes of compiler output not shown]\n";
     if (compile.timedOut) build.log = "the compiler was stopped after the limit of " + std::to_string(int(limits.wallSeconds)) + " s\n" + build.log;
     else if (!compile.succeeded && build.log.empty()) build.log = "the compiler failed: " + compile.failure + "\n";
     build.executable = (fs::path(host.output) / "rtlab-worker").string();
     build.succeeded = compile.succeeded;
+    build.sources = compile.sources;
+    build.cached = compile.cached;
     // Written by the grader after the compile, over anything the compile left there.
     if (build.succeeded) writeWorkerSources((fs::path(host.sources) / "assignments").string(), build.executable);
     return build;

@@ -16,6 +16,7 @@ struct SubmissionBuild {
     std::string executable;                   // the worker
     std::string log;                          // raw compiler and linker output, or why the build was refused
     std::vector<std::string> fromSubmission;  // the files taken from the submission
+    size_t sources = 0, cached = 0;           // .cpp files, and those whose objects came from the cache
 };
 
 struct CompileLimits {

@@ -1,5 +1,8 @@
 #include "grader/engine/worker_compile.h"
 
+#include "grader/engine/cache_files.h"
+#include "grader/engine/unit_object_cache.h"
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -34,42 +37,107 @@ void appendOutput(WorkerCompile& compile, const ProcessResult& result, size_t ca
     if (!result.succeeded() && compile.failure.empty()) compile.failure = result.failure;
 }
 
+// One .cpp's own view of the sources: every header of the submission and that file, no
+// other .cpp, with an output folder of its own; what its compile can read is then exactly
+// what its cache key holds.
+CompileInputs unitView(const CompileInputs& host, const std::vector<fs::path>& headers, const fs::path& source, const fs::path& at) {
+    CompileInputs view{(at / "src").string(), host.headers, (at / "objects").string(), (at / "out").string()};
+    fs::remove_all(at);
+    for (const fs::path& file : headers) {
+        fs::create_directories((view.sources / file).parent_path());
+        fs::copy_file(fs::path(host.sources) / file, view.sources / file);
+    }
+    fs::create_directories((view.sources / source).parent_path());
+    fs::copy_file(fs::path(host.sources) / source, view.sources / source);
+    fs::create_directories(view.objects);
+    fs::create_directories(view.output);
+    return view;
+}
+
+// Compiles one .cpp in its view (at viewDir) into objectTo. Never throws: it runs on the
+// compile threads, and a file that cannot be written fails this unit's compile only.
+ProcessResult compileUnit(const CompileSandbox& sandbox, const CompileInputs& host, const std::vector<fs::path>& headers,
+                          const fs::path& source, const fs::path& viewDir, std::vector<std::string> command, const ProcessLimits& limits,
+                          const fs::path& objectTo) {
+    ProcessResult result;
+    try {
+        const CompileInputs view = unitView(host, headers, source, viewDir);
+        const CompileInputs seen = sandbox.visiblePaths(view);
+        command.insert(command.end(), {"-I" + seen.headers, "-I" + seen.sources, "-c", (fs::path(seen.sources) / source).string(), "-o",
+                                       (fs::path(seen.output) / "unit.o").string()});
+        result = sandbox.run(view, command, limits);
+        if (result.succeeded()) fs::copy_file(fs::path(view.output) / "unit.o", objectTo, fs::copy_options::overwrite_existing);
+    } catch (const fs::filesystem_error& e) {
+        result.exitCode = -1;
+        result.failure = source.string() + ": its compile could not be set up (" + e.code().message() + ")";
+    }
+    return result;
+}
+
+// The digest of what every unit's compile shares, for the cache key: the flags, the student
+// headers and the submission's own headers, each with its path.
+std::string sharedDigest(const CompileInputs& host, const nlohmann::json& toolchain, const std::vector<fs::path>& headers) {
+    ContentKey key;
+    key.add(toolchain.at("compile_flags").dump());
+    key.addFolder(host.headers);
+    for (const fs::path& file : headers) key.addFile(file.string(), fs::path(host.sources) / file);
+    return key.digest();
+}
+
 }  // namespace
 
 WorkerCompile compileWorker(const CompileSandbox& sandbox, const CompileInputs& host, const nlohmann::json& toolchain,
-                            const ProcessLimits& limits) {
+                            const ProcessLimits& limits, const std::string& cacheDir) {
     const Clock::time_point deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limits.wallSeconds));
     const CompileInputs inside = sandbox.visiblePaths(host);
-    std::vector<fs::path> sources;
-    for (const auto& entry : fs::recursive_directory_iterator(host.sources))
-        if (entry.path().extension() == ".cpp") sources.push_back(entry.path().lexically_relative(host.sources));
+    std::vector<fs::path> sources, headers;
+    for (const auto& entry : fs::recursive_directory_iterator(host.sources)) {
+        if (!entry.is_regular_file()) continue;
+        (entry.path().extension() == ".cpp" ? sources : headers).push_back(entry.path().lexically_relative(host.sources));
+    }
     std::sort(sources.begin(), sources.end());
+    std::sort(headers.begin(), headers.end());
     fs::create_directories(fs::path(host.output) / "objects");
     // Objects are numbered, so no file name of the submission reaches the link line twice.
-    auto objectOf = [&](size_t i) { return (fs::path(inside.output) / "objects" / (std::to_string(i) + ".o")).string(); };
+    auto objectOf = [&](const std::string& output, size_t i) { return (fs::path(output) / "objects" / (std::to_string(i) + ".o")).string(); };
+    const std::vector<std::string> compiler = compilerCommand(toolchain);
+    // Only where the namespace shows each compile its view alone: without it the compiler could
+    // read any file, and its object could depend on more than the key.
+    UnitObjectCache cache(sandbox.usesNamespaces() ? fs::path(cacheDir) : fs::path(), compiler.front(), sharedDigest(host, toolchain, headers));
+    const fs::path views = fs::path(host.sources).parent_path() / "units";
 
     std::vector<ProcessResult> results(sources.size());
+    std::vector<std::string> keys(sources.size());
+    std::vector<size_t> toCompile;
+    for (size_t i = 0; i < sources.size(); ++i) {
+        keys[i] = cache.key(sources[i].string(), readBytes(fs::path(host.sources) / sources[i]));
+        if (cache.fetch(keys[i], objectOf(host.output, i), &results[i].output)) results[i].exitCode = 0;
+        else toCompile.push_back(i);
+    }
     std::atomic<size_t> next{0};
     auto compileSome = [&] {
-        for (size_t i; (i = next++) < sources.size();) {
-            std::vector<std::string> command = compilerCommand(toolchain);
-            command.insert(command.end(), {"-I" + inside.headers, "-I" + inside.sources, "-c", (fs::path(inside.sources) / sources[i]).string(),
-                                           "-o", objectOf(i)});
-            results[i] = sandbox.run(host, command, within(limits, deadline));
+        for (size_t n; (n = next++) < toCompile.size();) {
+            const size_t i = toCompile[n];
+            const fs::path object = objectOf(host.output, i);
+            results[i] = compileUnit(sandbox, host, headers, sources[i], views / std::to_string(i), compiler, within(limits, deadline), object);
+            // Messages cut short are not kept: a later grading would show less than this one.
+            if (results[i].succeeded() && results[i].droppedBytes == 0) cache.store(keys[i], object, results[i].output);
         }
     };
     size_t threads = std::clamp<size_t>(std::thread::hardware_concurrency(), 1, 4);
     std::vector<std::thread> pool;
-    for (size_t t = 1; t < std::min(threads, sources.size()); ++t) pool.emplace_back(compileSome);
+    for (size_t t = 1; t < std::min(threads, toCompile.size()); ++t) pool.emplace_back(compileSome);
     compileSome();
     for (std::thread& t : pool) t.join();
 
     WorkerCompile compile;
+    compile.sources = sources.size();
+    compile.cached = sources.size() - toCompile.size();
     for (const ProcessResult& result : results) appendOutput(compile, result, limits.outputBytes);
     if (!std::all_of(results.begin(), results.end(), [](const ProcessResult& r) { return r.succeeded(); })) return compile;
 
-    std::vector<std::string> link = {compilerCommand(toolchain).front()};
-    for (size_t i = 0; i < sources.size(); ++i) link.push_back(objectOf(i));
+    std::vector<std::string> link = {compiler.front()};
+    for (size_t i = 0; i < sources.size(); ++i) link.push_back(objectOf(inside.output, i));
     std::vector<fs::path> objects;
     for (const auto& entry : fs::directory_iterator(host.objects)) objects.push_back(entry.path().filename());
     std::sort(objects.begin(), objects.end());

@@ -1,0 +1,78 @@
+#!/bin/bash
+# The grader's object cache (grader/engine/unit_object_cache.h) serves an object only for the
+# same bytes seen the same way, and changes no verdict and no message:
+#   - a second grading of the same submission compiles nothing and reports what the first did,
+#     the compiler's warnings included;
+#   - a header of the submission changed under an unchanged .cpp recompiles that .cpp, and the
+#     verdict follows the header;
+#   - a .cpp cannot include another .cpp (each compiles in a view of its own), and says so.
+# Other tests grade at the same time and share the cache, so counts are checked as "all"/"none"
+# only where the bytes are this test's own.
+# Usage: unit_object_cache.sh BUILD_DIR SOURCE_DIR
+set -u
+build=$1
+source=$2
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+# grade NAME: grades $scratch/NAME on a0 into $scratch/NAME.json.
+grade() {
+    "$build/rtlab-grader" grade --submission "$scratch/$1" --assignment a0 --quiet --root "$source" \
+        --models "$build/models" --work "$scratch/work-$1-$RANDOM" --json "$scratch/$1.json" > "$scratch/$1.log" 2>&1
+}
+# field NAME EXPR: a Python expression over the report r and its build test b.
+field() {
+    python3 -c "import json,sys; r=json.load(open(sys.argv[1])); b=r['tests'][0]; print($2)" "$scratch/$1.json"
+}
+
+# A submission whose ray_box.cpp depends on a header of its own and prints a warning, with a marker in a comment so that no other test ever has these bytes.
+make_submission() {
+    local dir=$scratch/$1 value=$2
+    mkdir -p "$dir/assignments"
+    cp -r "$source/solutions/a0_intersect" "$dir/assignments/"
+    printf '#pragma once\n// unit_object_cache.sh %s\nnamespace cached_test { constexpr float kScale = %s; }\n' "$$" "$value" \
+        > "$dir/assignments/a0_intersect/scale.h"
+    python3 - "$dir/assignments/a0_intersect/ray_box.cpp" <<'PY'
+import re, sys
+path = sys.argv[1]
+text = open(path).read()
+text = text.replace('#include', '#include "scale.h"\n#include', 1)
+# A hit only while the header's constant is 1 (the reference); with 2 every box is missed.
+text, n = re.subn(r'return (true|false);', r'return (\1) && cached_test::kScale == 1.0f;', text)
+assert n > 0, "ray_box.cpp has no return to scale"
+text += '\nnamespace { int unusedHere() { int unusedWarning = 3; return 0; } }\n'
+open(path, 'w').write(text)
+PY
+}
+
+make_submission first 1.0f
+grade first || fail "the first grading did not run: $(cat "$scratch/first.log")"
+cp -r "$scratch/first" "$scratch/again"
+grade again || fail "the second grading did not run: $(cat "$scratch/again.log")"
+[ "$(field again "'compiled 0 of' in ' '.join(b['details'])")" = True ] ||
+    fail "the same bytes compiled again: $(field again "b['details']")"
+[ "$(field first "[t['status'] for t in r['tests']]")" = "$(field again "[t['status'] for t in r['tests']]")" ] ||
+    fail "a cached object changed a verdict"
+[ "$(field first "[d for d in b['details'] if 'warning' in d]")" = "$(field again "[d for d in b['details'] if 'warning' in d]")" ] ||
+    fail "a cached object lost the compiler's messages"
+[ "$(field again "any('unusedWarning' in d for d in b['details'])")" = True ] ||
+    fail "the compiler's warning is not in the build test: $(field again "b['details']")"
+[ "$(field first "r['score'] == r['max_score']")" = True ] || fail "the reference with scale 1 does not earn full marks"
+
+# The header changes, ray_box.cpp does not: its object must not come from the cache.
+make_submission changed 2.0f
+grade changed || fail "the grading with a changed header did not run: $(cat "$scratch/changed.log")"
+[ "$(field changed "r['score'] < r['max_score']")" = True ] ||
+    fail "a changed header under an unchanged .cpp kept the old object (full marks with scale 2)"
+
+# One .cpp including another finds nothing.
+make_submission includes 1.0f
+printf '#include "ray_sphere.cpp"\n' >> "$scratch/includes/assignments/a0_intersect/ray_triangle.cpp"
+grade includes
+[ "$(field includes "b['status']")" = failed ] || fail "a .cpp included another .cpp"
+[ "$(field includes "'ray_sphere.cpp' in b['reason']")" = True ] || fail "the build test does not name the missing file: $(field includes "b['reason']")"
+
+[ $failures -eq 0 ] && echo "unit_object_cache: repeated bytes served from the cache, changed headers recompiled"
+exit $((failures > 0))
