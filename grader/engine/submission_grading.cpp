@@ -73,8 +73,9 @@ GradingReport gradeSubmission(const std::string& submissionDir, const Submission
         buildTest.status = TestStatus::Passed;
         buildTest.fraction = 1.0;
         for (const std::string& file : build.fromSubmission) buildTest.details.push_back("from the submission: " + file);
-        buildTest.details.push_back("compiled " + std::to_string(build.sources - build.cached) + " of " + std::to_string(build.sources) +
-                                    " .cpp files; the others were compiled before, byte for byte, with the same headers");
+        std::string compiled = "compiled " + std::to_string(build.sources - build.cached) + " of " + std::to_string(build.sources) + " .cpp files";
+        if (build.cached > 0) compiled += "; the others were compiled before, byte for byte, with the same headers";
+        buildTest.details.push_back(compiled);
     } else {
         // Every test is still listed, failed, so the score is 0 of the assignments' points.
         g.unavailableWorker = "not graded: the submission does not compile (see the build test)";

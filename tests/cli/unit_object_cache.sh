@@ -66,6 +66,11 @@ make_submission changed 2.0f
 grade changed || fail "the grading with a changed header did not run: $(cat "$scratch/changed.log")"
 [ "$(field changed "r['score'] < r['max_score']")" = True ] ||
     fail "a changed header under an unchanged .cpp kept the old object (full marks with scale 2)"
+# The build test's count says "compiled before" exactly when some files were.
+for name in first again changed; do
+    [ "$(field $name "[('compiled before' in l) == (l.split()[1] != l.split()[3]) for l in b['details'] if l.startswith('compiled ')]")" = "[True]" ] ||
+        fail "the $name grading's count of compiled files reads wrong: $(field $name "b['details'][:3]")"
+done
 
 # One .cpp including another finds nothing.
 make_submission includes 1.0f
