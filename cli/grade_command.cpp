@@ -3,6 +3,7 @@
 // folder of submissions (or one shard of it), and writes the reports asked for;
 // `rtlab grade merge` joins per-student reports into the CSV.
 #include "cli/commands.h"
+#include "cli/this_build.h"
 #include "framework/core/error.h"
 #include "grader/engine/assignment_registry.h"
 #include "grader/engine/batch_grading.h"
@@ -97,7 +98,7 @@ void gradeFolderOfSubmissions(const GradeFlags& flags) {
 void merge(const MergeFlags& flags) {
     std::vector<std::string> reports = grader::reportsInFolders(flags.reportFolders);
     if (reports.empty()) throw Error(flags.reportFolders.front() + ": no JSON reports to merge");
-    grader::writeGradesCsv(reports, flags.csv, grader::loadGradingRubric(RTLAB_REPOSITORY_DIR, flags.rubric).precision());
+    grader::writeGradesCsv(reports, flags.csv, grader::loadGradingRubric(repositoryDir(), flags.rubric).precision());
     std::cout << "merged " << reports.size() << " reports into " << flags.csv << "\n";
 }
 
@@ -129,7 +130,7 @@ void writeReports(const grader::GradingReport& report, const GradeFlags& flags) 
 
 void grade(GradeFlags& flags) {
     grader::GradingOptions& g = flags.grading;
-    if (g.sourceDir.empty()) g.sourceDir = RTLAB_REPOSITORY_DIR;
+    if (g.sourceDir.empty()) g.sourceDir = repositoryDir();
     g.traceFailures = !flags.html.empty();
     if (g.modelsDir.empty()) g.modelsDir = (executableDir() / "models").string();
     if (!fs::is_directory(g.sourceDir + "/grader"))

@@ -4,6 +4,7 @@
 // or private ships), minus everything that holds an answer or needs one, and becomes a fresh
 // git repository with a single commit.
 #include "cli/commands.h"
+#include "cli/this_build.h"
 #include "framework/core/error.h"
 #include "framework/external/temporary_directory.h"
 #include "grader/engine/process_runner.h"
@@ -41,7 +42,7 @@ constexpr const char* kTar = "/usr/bin/tar";
 
 struct ReleaseFlags {
     std::string dir;
-    std::string repository = RTLAB_REPOSITORY_DIR;
+    std::string repository = repositoryDir();
 };
 
 // Runs a program with stdin closed, this process's environment (git needs HOME for the user's

@@ -1,4 +1,5 @@
 #include "cli/commands.h"
+#include "cli/this_build.h"
 #include "framework/core/error.h"
 #include "framework/core/untrusted_text.h"
 
@@ -10,7 +11,7 @@ namespace rtlab::cli {
 int run(int argc, char** argv) {
     CLI::App app{"rtlab: ray-tracing acceleration structures and radiometry, by assignment"};
     app.require_subcommand(1);
-    app.set_version_flag("--version", "rtlab " RTLAB_VERSION);
+    app.set_version_flag("--version", std::string("rtlab ") + version());
     addInfoCommand(app);
     addRenderCommand(app);
     addHitsCommand(app);

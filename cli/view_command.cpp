@@ -5,6 +5,7 @@
 // estimators. The work is in viewer/; this file parses the command and hands the viewer the
 // assignment functions it calls (the DDA, the samplers, the estimators) as function objects.
 #include "cli/commands.h"
+#include "cli/this_build.h"
 #include "framework/accel/accelerator.h"
 #include "framework/accel/accelerator_registry.h"
 #include "framework/core/error.h"
@@ -127,7 +128,7 @@ void view(const ViewOptions& o) {
     request.width = o.width;
     request.height = o.height;
     request.cameraName = o.camera;
-    request.repositoryDir = RTLAB_REPOSITORY_DIR;
+    request.repositoryDir = repositoryDir();
     if (!o.noReference) request.referenceProgram = referenceProgram();
     request.ddaWalk = linkedDdaWalk;
     if (!o.ray.empty()) {
