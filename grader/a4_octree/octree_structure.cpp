@@ -91,28 +91,33 @@ private:
         return count;
     }
 
+    // Written only when there is a problem: formatting every node's box took longer than checking it.
+    static std::string describeNode(uint32_t index, int depth, const Bounds3f& box) {
+        return "node " + std::to_string(index) + " (depth " + std::to_string(depth) + ", box " + describeBox(box) + ")";
+    }
+
     void node(uint32_t index, const Bounds3f& box, int depth, const Reach& reach) {
         const OctreeNode& n = octree_.nodes[index];
         report_.depth = std::max(report_.depth, depth);
-        const std::string where = "node " + std::to_string(index) + " (depth " + std::to_string(depth) + ", box " + describeBox(box) + ")";
-        if (n.isLeaf()) return leaf(n, box, depth, reach, where);
-        if (depth >= options_.maxDepth) return problem(where + " is split, but it lies at maxDepth " + std::to_string(options_.maxDepth));
+        if (n.isLeaf()) return leaf(index, n, box, depth, reach);
+        auto where = [&] { return describeNode(index, depth, box); };
+        if (depth >= options_.maxDepth) return problem(where() + " is split, but it lies at maxDepth " + std::to_string(options_.maxDepth));
         if (n.firstChild != nextBlock_)
-            return problem(where + ": its children start at node " + std::to_string(n.firstChild) + "; the depth-first layout puts them at " +
+            return problem(where() + ": its children start at node " + std::to_string(n.firstChild) + "; the depth-first layout puts them at " +
                            std::to_string(nextBlock_));
         if (uint64_t(n.firstChild) + kOctreeChildren > octree_.nodes.size())
-            return problem(where + ": its children run past the end of the node array");
+            return problem(where() + ": its children run past the end of the node array");
         nextBlock_ += kOctreeChildren;
         if (n.primCount < reach.sure.size() || n.primCount > reach.possible.size())
-            problem(where + " counts " + std::to_string(n.primCount) + " primitives; " + std::to_string(reach.sure.size()) +
+            problem(where() + " counts " + std::to_string(n.primCount) + " primitives; " + std::to_string(reach.sure.size()) +
                     (reach.sure.size() == reach.possible.size() ? "" : " to " + std::to_string(reach.possible.size())) + " overlap it");
         if (n.primCount <= options_.maxPrims)
-            problem(where + " holds " + std::to_string(n.primCount) + " primitives, at most maxPrims = " + std::to_string(options_.maxPrims) +
+            problem(where() + " holds " + std::to_string(n.primCount) + " primitives, at most maxPrims = " + std::to_string(options_.maxPrims) +
                     ": it must be a leaf");
         int holdingAll = 0;
         for (int k = 0; k < kOctreeChildren; ++k) holdingAll += octree_.nodes[n.firstChild + k].primCount == n.primCount ? 1 : 0;
         if (holdingAll >= 2)
-            problem(where + ": " + std::to_string(holdingAll) + " of its children hold all its " + std::to_string(n.primCount) +
+            problem(where() + ": " + std::to_string(holdingAll) + " of its children hold all its " + std::to_string(n.primCount) +
                     " primitives, so the memory rule makes it a leaf");
         if (report_.problems.size() >= 5) return;
         for (int k = 0; k < kOctreeChildren; ++k) {
@@ -121,24 +126,25 @@ private:
         }
     }
 
-    void leaf(const OctreeNode& n, const Bounds3f& box, int depth, const Reach& reach, const std::string& where) {
+    void leaf(uint32_t index, const OctreeNode& n, const Bounds3f& box, int depth, const Reach& reach) {
         ++report_.leaves;
+        auto where = [&] { return describeNode(index, depth, box); };
         if (n.primStart != nextPrim_)
-            return problem(where + ": its list starts at " + std::to_string(n.primStart) + " in primIndices; the leaves before it end at " +
+            return problem(where() + ": its list starts at " + std::to_string(n.primStart) + " in primIndices; the leaves before it end at " +
                            std::to_string(nextPrim_));
-        if (uint64_t(n.primStart) + n.primCount > octree_.primIndices.size()) return problem(where + ": its list runs past the end of primIndices");
+        if (uint64_t(n.primStart) + n.primCount > octree_.primIndices.size()) return problem(where() + ": its list runs past the end of primIndices");
         nextPrim_ += n.primCount;
         std::vector<uint32_t> list(octree_.primIndices.begin() + n.primStart, octree_.primIndices.begin() + n.primStart + n.primCount);
         if (std::adjacent_find(list.begin(), list.end(), std::greater_equal<uint32_t>()) != list.end())
-            return problem(where + ": its primitives " + listOf(list) + " are not in increasing order");
+            return problem(where() + ": its primitives " + listOf(list) + " are not in increasing order");
         std::vector<uint32_t> extra, missing;
         std::set_difference(list.begin(), list.end(), reach.possible.begin(), reach.possible.end(), std::back_inserter(extra));
         std::set_difference(reach.sure.begin(), reach.sure.end(), list.begin(), list.end(), std::back_inserter(missing));
-        if (!missing.empty()) problem(where + " misses the primitives " + listOf(missing) + ", which overlap it");
-        if (!extra.empty()) problem(where + " lists the primitives " + listOf(extra) + ", which do not overlap it");
+        if (!missing.empty()) problem(where() + " misses the primitives " + listOf(missing) + ", which overlap it");
+        if (!extra.empty()) problem(where() + " lists the primitives " + listOf(extra) + ", which do not overlap it");
         if (!missing.empty() || !extra.empty()) return;
         if (list.size() > options_.maxPrims && depth < options_.maxDepth && childrenHoldingAll(box, list) < 2)
-            problem(where + " is a leaf of " + std::to_string(list.size()) + " primitives, more than maxPrims = " +
+            problem(where() + " is a leaf of " + std::to_string(list.size()) + " primitives, more than maxPrims = " +
                     std::to_string(options_.maxPrims) + " above maxDepth " + std::to_string(options_.maxDepth) +
                     ", and its split would separate them: it must be split");
     }
