@@ -26,7 +26,7 @@ std::vector<std::string> isolation() {
             "--dev", "/dev", "--tmpfs", "/tmp", "--clearenv", "--setenv", "PATH", "/usr/bin", "--setenv", "LC_ALL", "C"};
 }
 
-const CompileInputs kInside = {"/src", "/include", "/objects", "/out"};
+const CompileInputs kInside = {"/src", "/include", "/objects", "/out", "/precompiled"};
 
 }  // namespace
 
@@ -59,7 +59,12 @@ std::string CompileSandbox::description() const {
            "): it could read any world-readable file; time, CPU and memory limits and stdin closed";
 }
 
-CompileInputs CompileSandbox::visiblePaths(const CompileInputs& host) const { return bubblewrap_ ? kInside : host; }
+CompileInputs CompileSandbox::visiblePaths(const CompileInputs& host) const {
+    if (!bubblewrap_) return host;
+    CompileInputs inside = kInside;
+    if (host.precompiled.empty()) inside.precompiled.clear();
+    return inside;
+}
 
 ProcessResult CompileSandbox::run(const CompileInputs& host, const std::vector<std::string>& command, ProcessLimits limits) const {
     if (!bubblewrap_) {
@@ -72,7 +77,9 @@ ProcessResult CompileSandbox::run(const CompileInputs& host, const std::vector<s
     std::vector<std::string> argv = {kBubblewrap};
     for (auto part : {isolation(), systemMounts()}) argv.insert(argv.end(), part.begin(), part.end());
     argv.insert(argv.end(), {"--ro-bind", host.sources, kInside.sources, "--ro-bind", host.headers, kInside.headers, "--ro-bind",
-                             host.objects, kInside.objects, "--bind", host.output, kInside.output, "--chdir", kInside.sources, "--"});
+                             host.objects, kInside.objects, "--bind", host.output, kInside.output, "--chdir", kInside.sources});
+    if (!host.precompiled.empty()) argv.insert(argv.end(), {"--ro-bind", host.precompiled, kInside.precompiled});
+    argv.push_back("--");
     argv.insert(argv.end(), command.begin(), command.end());
     return runProcess(argv, kEnvironment, limits);
 }

@@ -1,7 +1,8 @@
 // Where a submission is compiled (docs/grading.md, "Isolation and trust"). The compiler sees
 // the student's files, the headers students are meant to include, the system headers and
 // toolchain, the objects it links against (the worker runtime, the committed stubs of the
-// assignments not graded), and a folder for its output; nothing else:
+// assignments not graded), the student headers precompiled, and a folder for its output;
+// nothing else:
 // not solutions/, not the grader's data, not scenes/refs/, not the rest of the machine. Under
 // bubblewrap that is a fresh mount namespace holding only those paths (and no network, no
 // other processes); where the machine allows no namespaces, the compiler runs as the
@@ -21,6 +22,7 @@ struct CompileInputs {
     std::string headers;  // framework/... headers meant for students
     std::string objects;  // a folder of objects to link: the worker runtime, compiled stubs
     std::string output;   // a writable, empty folder
+    std::string precompiled;  // the student headers precompiled (precompiled_header.h); empty: none
 };
 
 class CompileSandbox {

@@ -1,6 +1,7 @@
 #include "grader/engine/stub_object_cache.h"
 
 #include "grader/engine/cache_files.h"
+#include "grader/engine/precompiled_header.h"
 
 #include <filesystem>
 #include <fstream>
@@ -20,6 +21,7 @@ std::string cacheKey(const StubObjectRequest& request) {
         key.add(contents);
     }
     key.addFolder(request.headersDir);
+    key.add(request.precompiledDir.empty() ? std::string() : kPrecompiledHeaderName);
     return key.digest();
 }
 
@@ -36,7 +38,7 @@ std::string compiledStubObject(const StubObjectRequest& request, std::string* wh
         return "";
     }
     const fs::path work = request.workDir;
-    CompileInputs host{(work / "src").string(), request.headersDir, (work / "objects").string(), (work / "out").string()};
+    CompileInputs host{(work / "src").string(), request.headersDir, (work / "objects").string(), (work / "out").string(), request.precompiledDir};
     for (const std::string& dir : {host.sources, host.objects, host.output}) fs::create_directories(dir);
     for (const auto& [path, contents] : request.stubs) {
         fs::create_directories((fs::path(host.sources) / path).parent_path());
@@ -49,6 +51,8 @@ std::string compiledStubObject(const StubObjectRequest& request, std::string* wh
     CompileInputs inside = sandbox.visiblePaths(host);
     std::vector<std::string> command = {fs::canonical(request.toolchain.at("compiler").get<std::string>()).string()};
     for (const auto& flag : request.toolchain.at("compile_flags")) command.push_back(flag.get<std::string>());
+    const std::vector<std::string> precompiled = precompiledHeaderFlags(inside);
+    command.insert(command.end(), precompiled.begin(), precompiled.end());
     command.insert(command.end(), {"-I" + inside.headers, "-I" + inside.sources, "-r", "-nostdlib"});
     for (const auto& [path, contents] : request.stubs)
         if (fs::path(path).extension() == ".cpp") command.push_back((fs::path(inside.sources) / path).string());

@@ -26,6 +26,7 @@ struct StubObjectRequest {
     std::string cacheDir;                      // where compiled objects are kept
     std::string workDir;                       // an empty folder for this compile
     ProcessLimits limits;
+    std::string precompiledDir;                // the student headers precompiled; empty: none
 };
 
 // The path of an object with every stub of the request compiled, from the cache when the same

@@ -2,6 +2,7 @@
 
 #include "framework/core/error.h"
 #include "grader/engine/compile_sandbox.h"
+#include "grader/engine/precompiled_header.h"
 #include "grader/engine/stub_object_cache.h"
 #include "grader/engine/submission_files.h"
 #include "grader/engine/worker_compile.h"
@@ -129,25 +130,35 @@ SubmissionBuild buildSubmission(const std::string& submissionDir, const std::str
     // The runtime is copied, so the compiler needs nothing of the build tree (whose folders an
     // unprivileged user may not be able to enter).
     CompileInputs host{(fs::path(workDir) / "src").string(), (fs::path(workDir) / "include").string(),
-                       (fs::path(workDir) / "objects").string(), (fs::path(workDir) / "out").string()};
+                       (fs::path(workDir) / "objects").string(), (fs::path(workDir) / "out").string(), ""};
     fs::create_directories(host.output);
     fs::create_directories(host.objects);
     fs::copy_file(toolchain.at("worker_runtime").get<std::string>(), fs::path(host.objects) / "worker-runtime.o",
                   fs::copy_options::overwrite_existing);
     copyStudentHeaders(sourceDir, host.headers);
+    // The committed code compiled once per cache key (the stubs, the student headers), not the
+    // submission: the submission's compile limit is for its own files, and a loaded machine may
+    // need more than that for the rest. Still a hard limit.
+    ProcessLimits committedCodeLimits = processLimits;
+    committedCodeLimits.wallSeconds = std::max(limits.wallSeconds, kStubCompileSeconds);
+    committedCodeLimits.cpuSeconds = static_cast<int>(committedCodeLimits.wallSeconds) + 1;
+    // The student headers precompiled, kept like the stubs' object, for the stubs and the
+    // submission. Only in the namespace sandbox: without it the compiler runs as nobody, who may
+    // not reach the build tree where they are kept. Without them every file still compiles,
+    // only slower.
+    if (sandbox.usesNamespaces()) {
+        std::string why;
+        host.precompiled = precompiledHeaderDir({host.headers, toolchain, (fs::path(toolchainPath).parent_path() / "precompiled-headers").string(),
+                                                 (fs::path(workDir) / "precompiled").string(), committedCodeLimits},
+                                                &why);
+    }
     // The assignments not graded link their committed stubs, compiled once for every grading
     // run; if that object cannot be had, they compile with the submission as before.
     auto ungraded = takeUngraded(stubs, gradedFolders);
     if (!ungraded.empty()) {
-        // The stubs are committed code compiled once per cache key, not the submission: the
-        // submission's compile limit is for its own files, and a loaded machine may need more
-        // than that for every other assignment's stubs. Still a hard limit.
-        ProcessLimits stubLimits = processLimits;
-        stubLimits.wallSeconds = std::max(limits.wallSeconds, kStubCompileSeconds);
-        stubLimits.cpuSeconds = static_cast<int>(stubLimits.wallSeconds) + 1;
         std::string why;
         std::string object = compiledStubObject({ungraded, host.headers, toolchain, (fs::path(toolchainPath).parent_path() / "stub-objects").string(),
-                                                 (fs::path(workDir) / "stubs").string(), stubLimits},
+                                                 (fs::path(workDir) / "stubs").string(), committedCodeLimits, host.precompiled},
                                                 &why);
         if (object.empty()) stubs.merge(ungraded);
         else fs::copy_file(object, fs::path(host.objects) / "stubs.o", fs::copy_options::overwrite_existing);

@@ -1,6 +1,7 @@
 #include "grader/engine/worker_compile.h"
 
 #include "grader/engine/cache_files.h"
+#include "grader/engine/precompiled_header.h"
 #include "grader/engine/unit_object_cache.h"
 
 #include <algorithm>
@@ -41,7 +42,7 @@ void appendOutput(WorkerCompile& compile, const ProcessResult& result, size_t ca
 // other .cpp, with an output folder of its own; what its compile can read is then exactly
 // what its cache key holds.
 CompileInputs unitView(const CompileInputs& host, const std::vector<fs::path>& headers, const fs::path& source, const fs::path& at) {
-    CompileInputs view{(at / "src").string(), host.headers, (at / "objects").string(), (at / "out").string()};
+    CompileInputs view{(at / "src").string(), host.headers, (at / "objects").string(), (at / "out").string(), host.precompiled};
     fs::remove_all(at);
     for (const fs::path& file : headers) {
         fs::create_directories((view.sources / file).parent_path());
@@ -65,7 +66,19 @@ ProcessResult compileUnit(const CompileSandbox& sandbox, const CompileInputs& ho
         const CompileInputs seen = sandbox.visiblePaths(view);
         command.insert(command.end(), {"-I" + seen.headers, "-I" + seen.sources, "-c", (fs::path(seen.sources) / source).string(), "-o",
                                        (fs::path(seen.output) / "unit.o").string()});
-        result = sandbox.run(view, command, limits);
+        ProcessLimits left = limits;
+        if (!seen.precompiled.empty()) {
+            std::vector<std::string> after = command;
+            const std::vector<std::string> flags = precompiledHeaderFlags(seen);
+            after.insert(after.begin() + 1, flags.begin(), flags.end());
+            const Clock::time_point start = Clock::now();
+            result = sandbox.run(view, after, limits);
+            left.wallSeconds = std::max(0.0, limits.wallSeconds - std::chrono::duration<double>(Clock::now() - start).count());
+        }
+        // Without the precompiled header: none, or a file that compiles only without it (a name
+        // of its own that clashes with one of the interfaces'); its messages are then this
+        // compile's, as if there were no precompiled header. Both share the unit's time limit.
+        if (seen.precompiled.empty() || (!result.succeeded() && !result.timedOut)) result = sandbox.run(view, command, left);
         if (result.succeeded()) fs::copy_file(fs::path(view.output) / "unit.o", objectTo, fs::copy_options::overwrite_existing);
     } catch (const fs::filesystem_error& e) {
         result.exitCode = -1;
@@ -80,6 +93,7 @@ std::string sharedDigest(const CompileInputs& host, const nlohmann::json& toolch
     ContentKey key;
     key.add(toolchain.at("compile_flags").dump());
     key.addFolder(host.headers);
+    key.add(host.precompiled.empty() ? std::string() : kPrecompiledHeaderName);
     for (const fs::path& file : headers) key.addFile(file.string(), fs::path(host.sources) / file);
     return key.digest();
 }
