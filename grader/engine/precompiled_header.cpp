@@ -30,6 +30,15 @@ std::string headerText(const fs::path& headersDir) {
     return text;
 }
 
+// Removes every kept header but `kept`: each is about 60 MiB, and one made from older headers
+// is not used again. A grading still compiling with one it removes compiles its files
+// without it (worker_compile.cpp).
+void removeOthers(const fs::path& cacheDir, const fs::path& kept) {
+    std::error_code error;
+    for (const auto& entry : fs::directory_iterator(cacheDir, error))
+        if (entry.path() != kept && entry.path().extension() != ".tmp") fs::remove_all(entry.path(), error);
+}
+
 }  // namespace
 
 std::string precompiledHeaderDir(const PrecompiledHeaderRequest& request, std::string* why) {
@@ -67,7 +76,10 @@ std::string precompiledHeaderDir(const PrecompiledHeaderRequest& request, std::s
     if (!error) fs::copy_file(fs::path(host.output) / gch, temporary / gch, error);
     if (!error) fs::rename(temporary, cached, error);
     if (error) fs::remove_all(temporary, error);
-    if (fs::is_regular_file(cached / gch)) return cached.string();
+    if (fs::is_regular_file(cached / gch)) {
+        removeOthers(request.cacheDir, cached);
+        return cached.string();
+    }
     // Not kept (a read-only build tree): this grading still has it.
     fs::copy_file(fs::path(host.sources) / kPrecompiledHeaderName, fs::path(host.output) / kPrecompiledHeaderName, error);
     if (error) *why = host.output + ": " + error.message();

@@ -78,7 +78,11 @@ ProcessResult compileUnit(const CompileSandbox& sandbox, const CompileInputs& ho
         // Without the precompiled header: none, or a file that compiles only without it (a name
         // of its own that clashes with one of the interfaces'); its messages are then this
         // compile's, as if there were no precompiled header. Both share the unit's time limit.
-        if (seen.precompiled.empty() || (!result.succeeded() && !result.timedOut)) result = sandbox.run(view, command, left);
+        if (seen.precompiled.empty() || (!result.succeeded() && !result.timedOut)) {
+            CompileInputs alone = view;
+            alone.precompiled.clear();  // not mounted either: it may have been removed since
+            result = sandbox.run(alone, command, left);
+        }
         if (result.succeeded()) fs::copy_file(fs::path(view.output) / "unit.o", objectTo, fs::copy_options::overwrite_existing);
     } catch (const fs::filesystem_error& e) {
         result.exitCode = -1;
