@@ -1,6 +1,8 @@
 #include "grader/engine/precompiled_header.h"
 
 #include "grader/engine/cache_files.h"
+#include "grader/engine/compiler_messages.h"
+#include "grader/engine/submission_toolchain.h"
 
 #include <algorithm>
 #include <cctype>
@@ -57,14 +59,13 @@ std::string precompiledHeaderDir(const PrecompiledHeaderRequest& request, std::s
 
     const CompileSandbox& sandbox = CompileSandbox::detect();
     const CompileInputs inside = sandbox.visiblePaths(host);
-    std::vector<std::string> command = {fs::canonical(request.toolchain.at("compiler").get<std::string>()).string()};
-    for (const auto& flag : request.toolchain.at("compile_flags")) command.push_back(flag.get<std::string>());
+    std::vector<std::string> command = compilerCommand(request.toolchain);
     const std::string gch = std::string(kPrecompiledHeaderName) + ".gch";
     command.insert(command.end(), {"-I" + inside.headers, "-x", "c++-header", (fs::path(inside.sources) / kPrecompiledHeaderName).string(), "-o",
                                    (fs::path(inside.output) / gch).string()});
     const ProcessResult result = sandbox.run(host, command, request.limits);
     if (!result.succeeded() || !fs::is_regular_file(fs::path(host.output) / gch)) {
-        *why = "the student headers did not precompile: " + (result.output.empty() ? result.failure : result.output);
+        *why = "the student headers did not precompile: " + (result.output.empty() ? result.failure : firstError(result.output));
         return "";
     }
     // Both files under a name of this process, then one rename: a concurrent grader that

@@ -31,7 +31,7 @@ struct PrecompiledHeaderRequest {
 };
 
 // A folder holding kPrecompiledHeaderName and its .gch, from the cache when the same headers and
-// toolchain were compiled before. Empty, with *why, when it cannot be made: files then compile
+// toolchain were compiled before. Empty, with *why (one line), when it cannot be made: files then compile
 // without it.
 std::string precompiledHeaderDir(const PrecompiledHeaderRequest& request, std::string* why);
 

@@ -1,6 +1,8 @@
 #include "grader/engine/stub_object_cache.h"
 
 #include "grader/engine/cache_files.h"
+#include "grader/engine/compiler_messages.h"
+#include "grader/engine/submission_toolchain.h"
 #include "grader/engine/precompiled_header.h"
 
 #include <filesystem>
@@ -49,8 +51,7 @@ std::string compiledStubObject(const StubObjectRequest& request, std::string* wh
     // resolved yet; the submission's link resolves it with the rest.
     const CompileSandbox& sandbox = CompileSandbox::detect();
     CompileInputs inside = sandbox.visiblePaths(host);
-    std::vector<std::string> command = {fs::canonical(request.toolchain.at("compiler").get<std::string>()).string()};
-    for (const auto& flag : request.toolchain.at("compile_flags")) command.push_back(flag.get<std::string>());
+    std::vector<std::string> command = compilerCommand(request.toolchain);
     const std::vector<std::string> precompiled = precompiledHeaderFlags(inside);
     command.insert(command.end(), precompiled.begin(), precompiled.end());
     command.insert(command.end(), {"-I" + inside.headers, "-I" + inside.sources, "-r", "-nostdlib"});
@@ -60,7 +61,7 @@ std::string compiledStubObject(const StubObjectRequest& request, std::string* wh
     ProcessResult result = sandbox.run(host, command, request.limits);
     const fs::path built = fs::path(host.output) / "stubs.o";
     if (!result.succeeded() || !fs::is_regular_file(built)) {
-        *why = "the committed stubs did not compile: " + (result.output.empty() ? result.failure : result.output);
+        *why = "the committed stubs did not compile: " + (result.output.empty() ? result.failure : firstError(result.output));
         return "";
     }
     if (!publishCopy(built, cached)) return built.string();  // this run can still use it

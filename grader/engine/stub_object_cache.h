@@ -30,8 +30,8 @@ struct StubObjectRequest {
 };
 
 // The path of an object with every stub of the request compiled, from the cache when the same
-// stubs, headers and toolchain were compiled before. Empty, with *why, when it cannot be made:
-// the caller then compiles the stubs with the submission.
+// stubs, headers and toolchain were compiled before. Empty, with *why (one line), when it cannot
+// be made: the caller then compiles the stubs with the submission.
 std::string compiledStubObject(const StubObjectRequest& request, std::string* why);
 
 }  // namespace rtlab::grader

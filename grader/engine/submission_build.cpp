@@ -5,6 +5,7 @@
 #include "grader/engine/precompiled_header.h"
 #include "grader/engine/stub_object_cache.h"
 #include "grader/engine/submission_files.h"
+#include "grader/engine/submission_toolchain.h"
 #include "grader/engine/worker_compile.h"
 #include "grader/engine/worker_sources.h"
 
@@ -86,16 +87,6 @@ void copyStudentHeaders(const fs::path& sourceDir, const fs::path& into) {
             if (entry.path().extension() == ".h") writeFile(into / folder / entry.path().filename(), readFrameworkFile(entry.path()));
 }
 
-nlohmann::json readToolchain(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw Error(path + ": missing; build rtlab first (make build)");
-    try {
-        return nlohmann::json::parse(in);
-    } catch (const nlohmann::json::exception& e) {
-        throw Error(path + ": malformed (" + e.what() + ")");
-    }
-}
-
 // The committed stubs of folders not in `graded` (all of them are graded when it is empty),
 // moved out of stubs.
 std::map<std::string, std::string> takeUngraded(std::map<std::string, std::string>& stubs, const std::vector<std::string>& graded) {
@@ -151,6 +142,7 @@ SubmissionBuild buildSubmission(const std::string& submissionDir, const std::str
         host.precompiled = precompiledHeaderDir({host.headers, toolchain, (fs::path(toolchainPath).parent_path() / "precompiled-headers").string(),
                                                  (fs::path(workDir) / "precompiled").string(), committedCodeLimits},
                                                 &why);
+        if (host.precompiled.empty()) build.slower.push_back("slower: every file compiled without the precompiled student headers, as they could not be made: " + why);
     }
     // The assignments not graded link their committed stubs, compiled once for every grading
     // run; if that object cannot be had, they compile with the submission as before.
@@ -160,8 +152,12 @@ SubmissionBuild buildSubmission(const std::string& submissionDir, const std::str
         std::string object = compiledStubObject({ungraded, host.headers, toolchain, (fs::path(toolchainPath).parent_path() / "stub-objects").string(),
                                                  (fs::path(workDir) / "stubs").string(), committedCodeLimits, host.precompiled},
                                                 &why);
-        if (object.empty()) stubs.merge(ungraded);
-        else fs::copy_file(object, fs::path(host.objects) / "stubs.o", fs::copy_options::overwrite_existing);
+        if (object.empty()) {
+            build.slower.push_back("slower: the committed stubs compiled with the submission, as they could not be compiled once: " + why);
+            stubs.merge(ungraded);
+        } else {
+            fs::copy_file(object, fs::path(host.objects) / "stubs.o", fs::copy_options::overwrite_existing);
+        }
     }
     build.fromSubmission = mergeSources(submission, stubs, host.sources);
 

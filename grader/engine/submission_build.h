@@ -17,6 +17,9 @@ struct SubmissionBuild {
     std::string log;                          // raw compiler and linker output, or why the build was refused
     std::vector<std::string> fromSubmission;  // the files taken from the submission
     size_t sources = 0, cached = 0;           // .cpp files, and those whose objects came from the cache
+    // One line for each piece of committed code (the student headers, the stubs) that could not
+    // be had compiled once: the build still succeeds, only slower, and this says why.
+    std::vector<std::string> slower;
 };
 
 struct CompileLimits {

@@ -3,6 +3,7 @@
 #include "framework/core/error.h"
 #include "grader/engine/assignment_registry.h"
 #include "grader/engine/compile_sandbox.h"
+#include "grader/engine/compiler_messages.h"
 #include "grader/engine/pristine_stubs.h"
 #include "grader/engine/worker_sources.h"
 #include "grader/engine/submission_build.h"
@@ -10,28 +11,11 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
-#include <sstream>
 
 namespace rtlab::grader {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::vector<std::string> splitLines(const std::string& text, size_t maxLines) {
-    std::vector<std::string> lines;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line) && lines.size() < maxLines;) lines.push_back(line);
-    return lines;
-}
-
-// The first line that says what went wrong: a compiler's "error:" line when there is one.
-std::string firstError(const std::string& log) {
-    std::istringstream in(log);
-    for (std::string line; std::getline(in, line);)
-        if (line.find("error") != std::string::npos) return line;
-    auto lines = splitLines(log, 1);
-    return lines.empty() ? "no output" : lines.front();
-}
 
 // The assignments/ folders the chosen assignments' tests call; empty (all of them) when every
 // assignment is graded.
@@ -76,6 +60,7 @@ GradingReport gradeSubmission(const std::string& submissionDir, const Submission
         std::string compiled = "compiled " + std::to_string(build.sources - build.cached) + " of " + std::to_string(build.sources) + " .cpp files";
         if (build.cached > 0) compiled += "; the others were compiled before, byte for byte, with the same headers";
         buildTest.details.push_back(compiled);
+        for (const std::string& line : build.slower) buildTest.details.push_back(line);
     } else {
         // Every test is still listed, failed, so the score is 0 of the assignments' points.
         g.unavailableWorker = "not graded: the submission does not compile (see the build test)";

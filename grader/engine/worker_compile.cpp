@@ -2,6 +2,7 @@
 
 #include "grader/engine/cache_files.h"
 #include "grader/engine/precompiled_header.h"
+#include "grader/engine/submission_toolchain.h"
 #include "grader/engine/unit_object_cache.h"
 
 #include <algorithm>
@@ -16,12 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
-
-std::vector<std::string> compilerCommand(const nlohmann::json& toolchain) {
-    std::vector<std::string> command = {fs::canonical(toolchain.at("compiler").get<std::string>()).string()};
-    for (const auto& flag : toolchain.at("compile_flags")) command.push_back(flag.get<std::string>());
-    return command;
-}
 
 // The limits of a process started at `now` under the deadline: the wall-clock time left.
 ProcessLimits within(ProcessLimits limits, Clock::time_point deadline) {

@@ -6,29 +6,19 @@
 #   - a file is compiled after it: a helper that names rtlab::Ray without including its header
 #     compiles in grading;
 #   - a file that compiles alone but clashes with the interfaces (a struct rtlab::Ray of its own) is
-#     compiled again without the header, and the submission keeps full marks.
+#     compiled again without the header, and the submission keeps full marks;
+#   - where no header can be made (an interface header that does not compile), every file
+#     compiles without it, with full marks, and the build test says why it was slower.
 # Usage: precompiled_headers.sh BUILD_DIR SOURCE_DIR
 set -u
 build=$1
 source=$2
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+. "$(dirname "$0")/grading_checks.sh"
 
-# grade NAME: grades $scratch/NAME on a0 into $scratch/NAME.json.
-grade() {
-    "$build/rtlab-grader" grade --submission "$scratch/$1" --assignment a0 --quiet --root "$source" \
-        --models "$build/models" --work "$scratch/work-$1" --json "$scratch/$1.json" > "$scratch/$1.log" 2>&1
-}
-field() {
-    python3 -c "import json,sys; r=json.load(open(sys.argv[1])); b=r['tests'][0]; print($2)" "$scratch/$1.json"
-}
 # submission NAME HELPER_TEXT: the reference a0 with one more file, marked so that no other
 # test has its bytes (the object cache would otherwise skip its compile).
 submission() {
-    mkdir -p "$scratch/$1/assignments"
-    cp -r "$source/solutions/a0_intersect" "$scratch/$1/assignments/"
+    reference_a0 "$1"
     printf '// precompiled_headers.sh %s\n%s\n' "$$" "$2" > "$scratch/$1/assignments/a0_intersect/helper.cpp"
 }
 
@@ -45,6 +35,23 @@ grade clashes || fail "the grading did not run: $(cat "$scratch/clashes.log")"
 [ "$(field clashes "b['status']")" = passed ] ||
     fail "a file that compiles alone failed after the student headers: $(field clashes "b.get('reason')") $(field clashes "b['details'][-5:]")"
 [ "$(field clashes "r['score'] == r['max_score']")" = True ] || fail "a file that compiles alone cost marks"
+
+# A source root whose interfaces include one that does not compile alone, so that no header
+# can be precompiled; an a0 submission never includes it. Its framework/ is a copy, the rest
+# the source's (without .git, the stubs are its assignments/ as they are).
+mkdir -p "$scratch/root"
+for entry in "$source"/*; do [ "$(basename "$entry")" = framework ] || ln -s "$(realpath "$entry")" "$scratch/root/"; done
+cp -r "$source/framework" "$scratch/root/"
+printf '#pragma once\n#error "precompiled_headers.sh: this header does not compile"\n' > "$scratch/root/framework/interface/a99_unused.h"
+reference_a0 without
+"$build/rtlab-grader" grade --submission "$scratch/without" --assignment a0 --quiet --root "$scratch/root" --models "$build/models" \
+    --work "$scratch/work-without" --json "$scratch/without.json" > "$scratch/without.log" 2>&1 ||
+    fail "the grading without a precompiled header did not run: $(cat "$scratch/without.log")"
+[ "$(field without "r['score'] == r['max_score']")" = True ] || fail "the reference a0 lost marks without a precompiled header"
+[ "$(field without "any(d.startswith('slower: every file compiled without the precompiled') and 'a99_unused.h' in d for d in b['details'])")" = True ] ||
+    fail "the build test does not say why it compiled without a precompiled header: $(field without "b['details']")"
+[ "$(field uses "any(d.startswith('slower:') for d in b['details'])")" = False ] ||
+    fail "a build with the precompiled header says it was slower: $(field uses "b['details']")"
 
 # The kept header, and whether the compiler takes it with the submissions' flags.
 header=$(find "$build/grader/precompiled-headers" -name rtlab_student_headers.h -newer "$scratch/uses" | head -1)

@@ -12,26 +12,12 @@
 set -u
 build=$1
 source=$2
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-
-# grade NAME: grades $scratch/NAME on a0 into $scratch/NAME.json.
-grade() {
-    "$build/rtlab-grader" grade --submission "$scratch/$1" --assignment a0 --quiet --root "$source" \
-        --models "$build/models" --work "$scratch/work-$1-$RANDOM" --json "$scratch/$1.json" > "$scratch/$1.log" 2>&1
-}
-# field NAME EXPR: a Python expression over the report r and its build test b.
-field() {
-    python3 -c "import json,sys; r=json.load(open(sys.argv[1])); b=r['tests'][0]; print($2)" "$scratch/$1.json"
-}
+. "$(dirname "$0")/grading_checks.sh"
 
 # A submission whose ray_box.cpp depends on a header of its own and prints a warning, with a marker in a comment so that no other test ever has these bytes.
 make_submission() {
     local dir=$scratch/$1 value=$2
-    mkdir -p "$dir/assignments"
-    cp -r "$source/solutions/a0_intersect" "$dir/assignments/"
+    reference_a0 "$1"
     printf '#pragma once\n// unit_object_cache.sh %s\nnamespace cached_test { constexpr float kScale = %s; }\n' "$$" "$value" \
         > "$dir/assignments/a0_intersect/scale.h"
     python3 - "$dir/assignments/a0_intersect/ray_box.cpp" <<'PY'
