@@ -507,9 +507,12 @@ TEST_CASE("every accelerator matches the oracle on the committed scenes") {
 
 TEST_CASE("every accelerator matches the oracle on the bunny and the engine") {
     // scripts/fetch-models puts them into the build tree (`make test` does that first).
+    // Brute force stays the shadow rays' reference (checkAllAccelerators), but is not checked
+    // again here: the other scenes check it against the oracle, and on the engine it was over a
+    // quarter of this test's time.
     std::vector<AcceleratorCase> accelerators;
     for (const AcceleratorCase& c : allAccelerators())
-        if (c.maxLeaf == 4) accelerators.push_back(c);
+        if (c.maxLeaf == 4 && c.spec.name != "brute") accelerators.push_back(c);
     for (const char* file : {"bunny.gltf", "engine.glb"}) {
         CAPTURE(file);
         Scene scene = loadFetchedModel(file);
