@@ -3,6 +3,7 @@
 #include "framework/core/error.h"
 #include "grader/engine/grading_report.h"
 #include "grader/engine/grading_rubric.h"
+#include "grader/engine/submission_toolchain.h"
 
 #include <doctest/doctest.h>
 
@@ -70,6 +71,42 @@ TEST_CASE("rubric: a malformed precision is an error naming the file") {
         CHECK_THROWS_WITH_AS(Rubric::load(path.string()), doctest::Contains(expected.c_str()), rtlab::Error);
         fs::remove(path);
     }
+}
+
+// One reader serves the three (grader/engine/json_file.h): each message is one line that names
+// the file and says what it should have been.
+TEST_CASE("rubric, toolchain and saved report: a missing or malformed file is one line naming it") {
+    struct Reader {
+        const char* what;
+        void (*read)(const std::string&);
+    };
+    const Reader readers[] = {
+        {"rubric", [](const std::string& p) { Rubric::load(p); }},
+        {"toolchain", [](const std::string& p) { readToolchain(p); }},
+        {"grading report", [](const std::string& p) { readJsonReport(p); }},
+    };
+    fs::path broken = writeRubric("truncated", R"({"rules": [)");
+    fs::path missing = fs::temp_directory_path() / ("rtlab-rubric-" + std::to_string(::getpid()) + "-absent.json");
+    for (const Reader& reader : readers) {
+        CAPTURE(reader.what);
+        std::string message;
+        try {
+            reader.read(broken.string());
+        } catch (const rtlab::Error& e) {
+            message = e.what();
+        }
+        CHECK(message.rfind(broken.string() + ": malformed " + reader.what + " (", 0) == 0);
+        CHECK(message.find('\n') == std::string::npos);
+        message.clear();
+        try {
+            reader.read(missing.string());
+        } catch (const rtlab::Error& e) {
+            message = e.what();
+        }
+        CHECK(message.rfind(missing.string() + ": ", 0) == 0);
+        CHECK(message.find('\n') == std::string::npos);
+    }
+    fs::remove(broken);
 }
 
 TEST_CASE("rubric: only the grader's own tests earn points") {

@@ -31,8 +31,8 @@ struct PrecompiledHeaderRequest {
 };
 
 // A folder holding kPrecompiledHeaderName and its .gch, from the cache when the same headers and
-// toolchain were compiled before. Empty, with *why (one line), when it cannot be made: files then compile
-// without it.
+// toolchain were compiled before. Empty, with *why (one line), when it cannot be made: files then
+// compile without it.
 std::string precompiledHeaderDir(const PrecompiledHeaderRequest& request, std::string* why);
 
 // The flags that compile a file after the header, for a compile that sees the paths `seen`

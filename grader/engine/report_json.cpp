@@ -1,6 +1,7 @@
 // The two JSON reports: rtlab's own (read back by --submission) and Gradescope's results.json.
 #include "framework/core/error.h"
 #include "grader/engine/grading_report.h"
+#include "grader/engine/json_file.h"
 
 #include <nlohmann/json.hpp>
 
@@ -65,11 +66,9 @@ void writeJsonReport(const GradingReport& untrusted, const std::string& path) {
 }
 
 GradingReport readJsonReport(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw Error(path + ": cannot read the grading report");
+    const nlohmann::json json = readJsonFile(path, "grading report", "cannot read the grading report");
     GradingReport report;
     try {
-        auto json = nlohmann::json::parse(in);
         report.implementation = json.value("implementation", "");
         report.seed = json.value("seed", uint64_t(0));
         report.seconds = json.value("execution_time", 0.0);

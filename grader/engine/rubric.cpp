@@ -1,6 +1,7 @@
 #include "grader/engine/rubric.h"
 
 #include "framework/core/error.h"
+#include "grader/engine/json_file.h"
 
 #include <nlohmann/json.hpp>
 
@@ -8,7 +9,6 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
-#include <fstream>
 
 namespace rtlab::grader {
 
@@ -39,19 +39,7 @@ std::string asJsonString(const std::string& text) {
     return nlohmann::json(text).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
-}  // namespace
-
-namespace {
-
-nlohmann::json readRubricFile(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw Error(path + ": cannot read the rubric");
-    try {
-        return nlohmann::json::parse(in);
-    } catch (const nlohmann::json::exception& e) {
-        throw Error(path + ": malformed rubric (" + e.what() + ")");
-    }
-}
+nlohmann::json readRubricFile(const std::string& path) { return readJsonFile(path, "rubric", "cannot read the rubric"); }
 
 }  // namespace
 

@@ -2,8 +2,8 @@
 
 #include "grader/engine/cache_files.h"
 #include "grader/engine/compiler_messages.h"
-#include "grader/engine/submission_toolchain.h"
 #include "grader/engine/precompiled_header.h"
+#include "grader/engine/submission_toolchain.h"
 
 #include <filesystem>
 #include <fstream>

@@ -1,20 +1,13 @@
 #include "grader/engine/submission_toolchain.h"
 
-#include "framework/core/error.h"
+#include "grader/engine/json_file.h"
 
 #include <filesystem>
-#include <fstream>
 
 namespace rtlab::grader {
 
 nlohmann::json readToolchain(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw Error(path + ": missing; build rtlab first (make build)");
-    try {
-        return nlohmann::json::parse(in);
-    } catch (const nlohmann::json::exception& e) {
-        throw Error(path + ": malformed (" + e.what() + ")");
-    }
+    return readJsonFile(path, "toolchain", "missing; build rtlab first (make build)");
 }
 
 std::vector<std::string> compilerCommand(const nlohmann::json& toolchain) {
