@@ -5,6 +5,8 @@
 #include "cli/commands.h"
 #include "framework/core/error.h"
 
+#include <CLI/CLI.hpp>
+
 #include <unistd.h>
 
 #include <cerrno>

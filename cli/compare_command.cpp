@@ -13,6 +13,8 @@
 #include "framework/render/image_io.h"
 #include "framework/scene/gltf_loader.h"
 
+#include <CLI/CLI.hpp>
+
 #include <iomanip>
 #include <iostream>
 #include <memory>

@@ -7,6 +7,8 @@
 #include "framework/core/error.h"
 #include "framework/scene/gltf_loader.h"
 
+#include <CLI/CLI.hpp>
+
 #include <fstream>
 #include <iostream>
 #include <memory>

@@ -6,6 +6,8 @@
 #include "framework/pov/pov_reference.h"
 #include "framework/scene/gltf_loader.h"
 
+#include <CLI/CLI.hpp>
+
 #include <fstream>
 #include <iostream>
 #include <memory>

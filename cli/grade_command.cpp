@@ -15,6 +15,8 @@
 #include "grader/engine/worker_sources.h"
 #include "viewer/report_viewers.h"
 
+#include <CLI/CLI.hpp>
+
 #include <chrono>
 #include <cstdio>
 #include <filesystem>

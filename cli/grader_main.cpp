@@ -5,6 +5,8 @@
 #include "cli/commands.h"
 #include "framework/core/error.h"
 
+#include <CLI/CLI.hpp>
+
 #include <iostream>
 
 int main(int argc, char** argv) {

@@ -9,6 +9,8 @@
 #include "framework/render/tiles.h"
 #include "framework/scene/gltf_loader.h"
 
+#include <CLI/CLI.hpp>
+
 #include <chrono>
 #include <cstdio>
 #include <filesystem>

@@ -4,6 +4,8 @@
 #include "framework/scene/emitters.h"
 #include "framework/scene/gltf_loader.h"
 
+#include <CLI/CLI.hpp>
+
 #include <cmath>
 #include <iostream>
 #include <map>

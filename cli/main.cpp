@@ -2,7 +2,7 @@
 // of the assignments they link (docs/layout.md). Grading is not done here: `grade` hands over
 // to rtlab-grader, which links no assignment code, with this executable's worker
 // (RTLAB_WORKER: rtlab-worker or rtlab-worker-solution, built beside it).
-#include "cli/commands.h"
+#include "cli/run.h"
 
 #include <cstring>
 #include <filesystem>

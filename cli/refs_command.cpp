@@ -19,6 +19,8 @@
 #include "framework/verification/image_compare.h"
 #include "framework/scene/gltf_loader.h"
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <iomanip>

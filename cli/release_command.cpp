@@ -9,6 +9,8 @@
 #include "framework/external/temporary_directory.h"
 #include "grader/engine/process_runner.h"
 
+#include <CLI/CLI.hpp>
+
 #include <filesystem>
 #include <iostream>
 #include <string>

@@ -1,7 +1,11 @@
+#include "cli/run.h"
+
 #include "cli/commands.h"
 #include "cli/this_build.h"
 #include "framework/core/error.h"
 #include "framework/core/untrusted_text.h"
+
+#include <CLI/CLI.hpp>
 
 #include <iostream>
 #include <string>

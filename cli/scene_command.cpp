@@ -7,6 +7,8 @@
 #include "framework/scene/gltf_loader.h"
 #include "framework/scene/gltf_writer.h"
 
+#include <CLI/CLI.hpp>
+
 #include <cstdio>
 #include <fstream>
 #include <iomanip>

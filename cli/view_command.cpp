@@ -17,6 +17,8 @@
 #include "viewer/scene_case.h"
 #include "viewer/viewer_folder.h"
 
+#include <CLI/CLI.hpp>
+
 #include <charconv>
 #include <chrono>
 #include <cmath>

@@ -2,7 +2,7 @@
 // what it wrote to stdout and stderr.
 #pragma once
 
-#include "cli/commands.h"
+#include "cli/run.h"
 
 #include <iostream>
 #include <sstream>

@@ -3,7 +3,6 @@
 // and a heat-map legend, the heat map quantises to 16-bit codes, render writes a viewable PNG
 // at the references' size and falls back from an a2 stub, and bad input gets one line that
 // names the file.
-#include "cli/commands.h"
 #include "cli/render_accelerator.h"
 #include "framework/core/error.h"
 #include "framework/core/ray_file.h"
