@@ -1,8 +1,9 @@
-// The committed stubs of the assignments a grading run does not grade, compiled once into one
-// relocatable object and kept by content (docs/grading.md, "Grading a submission"). Grading
-// one assignment then compiles only that assignment's files of the submission (and those it
-// builds on), so a submission's compile time does not grow with the number of assignments in
-// the course. The object holds committed files only, never a student's, and is compiled in
+// The committed stubs of an assignment a grading run does not grade, compiled once into one
+// relocatable object per assignment folder and kept by content (docs/grading.md, "Grading a
+// submission"). Grading one assignment then compiles only that assignment's files of the
+// submission (and those it builds on), so a submission's compile time does not grow with the
+// number of assignments in the course, and each folder's stubs compile once whichever others
+// a run grades. The object holds committed files only, never a student's, and is compiled in
 // the same sandbox as a submission.
 #pragma once
 

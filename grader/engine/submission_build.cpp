@@ -88,14 +88,15 @@ void copyStudentHeaders(const fs::path& sourceDir, const fs::path& into) {
 }
 
 // The committed stubs of folders not in `graded` (all of them are graded when it is empty),
-// moved out of stubs.
-std::map<std::string, std::string> takeUngraded(std::map<std::string, std::string>& stubs, const std::vector<std::string>& graded) {
-    std::map<std::string, std::string> ungraded;
+// moved out of stubs, by folder.
+std::map<std::string, std::map<std::string, std::string>> takeUngraded(std::map<std::string, std::string>& stubs,
+                                                                       const std::vector<std::string>& graded) {
+    std::map<std::string, std::map<std::string, std::string>> ungraded;
     if (graded.empty()) return ungraded;
     for (auto it = stubs.begin(); it != stubs.end();) {
         std::string folder = fs::path(it->first).lexically_relative("assignments").begin()->string();
         if (std::find(graded.begin(), graded.end(), folder) == graded.end()) {
-            ungraded.insert(*it);
+            ungraded[folder].insert(*it);
             it = stubs.erase(it);
         } else {
             ++it;
@@ -144,21 +145,25 @@ SubmissionBuild buildSubmission(const std::string& submissionDir, const std::str
                                                 &why);
         if (host.precompiled.empty()) build.slower.push_back("slower: every file compiled without the precompiled student headers, as they could not be made: " + why);
     }
-    // The assignments not graded link their committed stubs, compiled once for every grading
-    // run; if that object cannot be had, they compile with the submission as before.
-    auto ungraded = takeUngraded(stubs, gradedFolders);
-    if (!ungraded.empty()) {
-        std::string why;
-        std::string object = compiledStubObject({ungraded, host.headers, toolchain, (fs::path(toolchainPath).parent_path() / "stub-objects").string(),
-                                                 (fs::path(workDir) / "stubs").string(), committedCodeLimits, host.precompiled},
-                                                &why);
+    // The assignments not graded link their committed stubs: an object per assignment folder,
+    // compiled once for every grading run that leaves the folder out, whichever others it
+    // grades. A folder whose object cannot be had compiles with the submission as before.
+    std::string uncompiled, why;
+    for (auto& [folder, folderStubs] : takeUngraded(stubs, gradedFolders)) {
+        std::string reason;
+        std::string object = compiledStubObject({folderStubs, host.headers, toolchain, (fs::path(toolchainPath).parent_path() / "stub-objects").string(),
+                                                 (fs::path(workDir) / "stubs" / folder).string(), committedCodeLimits, host.precompiled},
+                                                &reason);
         if (object.empty()) {
-            build.slower.push_back("slower: the committed stubs compiled with the submission, as they could not be compiled once: " + why);
-            stubs.merge(ungraded);
+            uncompiled += (uncompiled.empty() ? "" : ", ") + folder;
+            if (why.empty()) why = reason;
+            stubs.merge(folderStubs);
         } else {
-            fs::copy_file(object, fs::path(host.objects) / "stubs.o", fs::copy_options::overwrite_existing);
+            fs::copy_file(object, fs::path(host.objects) / ("stubs-" + folder + ".o"), fs::copy_options::overwrite_existing);
         }
     }
+    if (!uncompiled.empty())
+        build.slower.push_back("slower: the committed stubs of " + uncompiled + " compiled with the submission, as they could not be compiled once: " + why);
     build.fromSubmission = mergeSources(submission, stubs, host.sources);
 
     WorkerCompile compile =

@@ -5,7 +5,9 @@
 #     the compiler's warnings included;
 #   - a header of the submission changed under an unchanged .cpp recompiles that .cpp, and the
 #     verdict follows the header;
-#   - a .cpp cannot include another .cpp (each compiles in a view of its own), and says so.
+#   - a .cpp cannot include another .cpp (each compiles in a view of its own), and says so;
+#   - the committed stubs of the assignments not graded compile once per assignment folder
+#     (grader/engine/stub_object_cache.h), whichever others a grading leaves out.
 # Other tests grade at the same time and share the cache, so counts are checked as "all"/"none"
 # only where the bytes are this test's own.
 # Usage: unit_object_cache.sh BUILD_DIR SOURCE_DIR
@@ -65,5 +67,15 @@ grade includes
 [ "$(field includes "b['status']")" = failed ] || fail "a .cpp included another .cpp"
 [ "$(field includes "'ray_sphere.cpp' in b['reason']")" = True ] || fail "the build test does not name the missing file: $(field includes "b['reason']")"
 
-[ $failures -eq 0 ] && echo "unit_object_cache: repeated bytes served from the cache, changed headers recompiled"
+# Grading a0 left out a1..a6, so each of their folders has its stubs' object; grading a1 leaves
+# out a2..a6, another set of the same folders, and compiles none of them (a folder compiled in a
+# grading has its own place under the work folder's build/stubs/).
+"$build/rtlab-grader" grade --submission "$scratch/first" --assignment a1 --quiet --root "$source" --models "$build/models" \
+    --work "$scratch/work-a1" --json "$scratch/a1.json" > "$scratch/a1.log" 2>&1 || fail "the a1 grading did not run: $(cat "$scratch/a1.log")"
+[ -d "$scratch/work-a1/build/objects" ] && [ ! -e "$scratch/work-a1/build/stubs" ] ||
+    fail "grading a1 after a0 compiled committed stubs again: $(ls "$scratch/work-a1/build/stubs" 2>&1 | tr '\n' ' ')"
+[ "$(ls "$scratch/work-a1/build/objects" | grep -c '^stubs-a[2-6]_')" = 5 ] ||
+    fail "grading a1 did not link a stubs' object per folder left out: $(ls "$scratch/work-a1/build/objects" | tr '\n' ' ')"
+
+[ $failures -eq 0 ] && echo "unit_object_cache: repeated bytes served from the cache, changed headers recompiled, stubs compiled once per folder"
 exit $((failures > 0))
