@@ -2,6 +2,7 @@
 
 #include "framework/core/error.h"
 #include "grader/engine/compile_sandbox.h"
+#include "grader/engine/parallel_jobs.h"
 #include "grader/engine/precompiled_header.h"
 #include "grader/engine/stub_object_cache.h"
 #include "grader/engine/submission_files.h"
@@ -12,10 +13,13 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <optional>
 #include <set>
+#include <utility>
+#include <vector>
 
 namespace rtlab::grader {
 namespace {
@@ -147,19 +151,30 @@ SubmissionBuild buildSubmission(const std::string& submissionDir, const std::str
     }
     // The assignments not graded link their committed stubs: an object per assignment folder,
     // compiled once for every grading run that leaves the folder out, whichever others it
-    // grades. A folder whose object cannot be had compiles with the submission as before.
+    // grades, and the folders new to the cache side by side. A folder whose object cannot be
+    // had compiles with the submission as before.
+    std::vector<std::pair<std::string, std::map<std::string, std::string>>> ungraded;
+    for (auto& folder : takeUngraded(stubs, gradedFolders)) ungraded.emplace_back(std::move(folder));
+    std::vector<std::string> objects(ungraded.size()), reasons(ungraded.size());
+    runInParallel(ungraded.size(), compileThreads(), [&](size_t i) {
+        const auto& [folder, folderStubs] = ungraded[i];
+        try {
+            objects[i] = compiledStubObject({folderStubs, host.headers, toolchain, (fs::path(toolchainPath).parent_path() / "stub-objects").string(),
+                                             (fs::path(workDir) / "stubs" / folder).string(), committedCodeLimits, host.precompiled},
+                                            &reasons[i]);
+        } catch (const std::exception& e) {
+            reasons[i] = e.what();
+        }
+    });
     std::string uncompiled, why;
-    for (auto& [folder, folderStubs] : takeUngraded(stubs, gradedFolders)) {
-        std::string reason;
-        std::string object = compiledStubObject({folderStubs, host.headers, toolchain, (fs::path(toolchainPath).parent_path() / "stub-objects").string(),
-                                                 (fs::path(workDir) / "stubs" / folder).string(), committedCodeLimits, host.precompiled},
-                                                &reason);
-        if (object.empty()) {
+    for (size_t i = 0; i < ungraded.size(); ++i) {
+        auto& [folder, folderStubs] = ungraded[i];
+        if (objects[i].empty()) {
             uncompiled += (uncompiled.empty() ? "" : ", ") + folder;
-            if (why.empty()) why = reason;
+            if (why.empty()) why = reasons[i];
             stubs.merge(folderStubs);
         } else {
-            fs::copy_file(object, fs::path(host.objects) / ("stubs-" + folder + ".o"), fs::copy_options::overwrite_existing);
+            fs::copy_file(objects[i], fs::path(host.objects) / ("stubs-" + folder + ".o"), fs::copy_options::overwrite_existing);
         }
     }
     if (!uncompiled.empty())

@@ -1,15 +1,14 @@
 #include "grader/engine/worker_compile.h"
 
 #include "grader/engine/cache_files.h"
+#include "grader/engine/parallel_jobs.h"
 #include "grader/engine/precompiled_header.h"
 #include "grader/engine/submission_toolchain.h"
 #include "grader/engine/unit_object_cache.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <filesystem>
-#include <thread>
 #include <vector>
 
 namespace rtlab::grader {
@@ -127,21 +126,13 @@ WorkerCompile compileWorker(const CompileSandbox& sandbox, const CompileInputs& 
         if (cache.fetch(keys[i], objectOf(host.output, i), &results[i].output)) results[i].exitCode = 0;
         else toCompile.push_back(i);
     }
-    std::atomic<size_t> next{0};
-    auto compileSome = [&] {
-        for (size_t n; (n = next++) < toCompile.size();) {
-            const size_t i = toCompile[n];
-            const fs::path object = objectOf(host.output, i);
-            results[i] = compileUnit(sandbox, host, headers, sources[i], views / std::to_string(i), compiler, within(limits, deadline), object);
-            // Messages cut short are not kept: a later grading would show less than this one.
-            if (results[i].succeeded() && results[i].droppedBytes == 0) cache.store(keys[i], object, results[i].output);
-        }
-    };
-    size_t threads = std::clamp<size_t>(std::thread::hardware_concurrency(), 1, 4);
-    std::vector<std::thread> pool;
-    for (size_t t = 1; t < std::min(threads, toCompile.size()); ++t) pool.emplace_back(compileSome);
-    compileSome();
-    for (std::thread& t : pool) t.join();
+    runInParallel(toCompile.size(), compileThreads(), [&](size_t n) {
+        const size_t i = toCompile[n];
+        const fs::path object = objectOf(host.output, i);
+        results[i] = compileUnit(sandbox, host, headers, sources[i], views / std::to_string(i), compiler, within(limits, deadline), object);
+        // Messages cut short are not kept: a later grading would show less than this one.
+        if (results[i].succeeded() && results[i].droppedBytes == 0) cache.store(keys[i], object, results[i].output);
+    });
 
     WorkerCompile compile;
     compile.sources = sources.size();
