@@ -2,6 +2,7 @@
 // its structure invariants, and the pinned split rules on cases derived by hand.
 #include "framework/accel/accelerator.h"
 #include "framework/accel/bvh_accelerator.h"
+#include "framework/accel/bvh_layout.h"
 #include "framework/core/pcg32.h"
 #include "framework/interface/a1_bvh.h"
 #include "framework/interface/a2_sah.h"
@@ -844,4 +845,41 @@ TEST_CASE("buildBvh lays nodes out depth first and the SAH cost of a hand-made t
     BvhAccelerator accel(options, false);
     accel.build(set);
     CHECK(sahCost(accel.structure()) == doctest::Approx(78.0 / 46.0).epsilon(1e-9));
+}
+
+TEST_CASE("the layout check passes the reference trees and names the first rule a broken tree breaks") {
+    // The tree of the test above: 0 root, 1 interior, 2 and 3 its leaves, 4 the root's second.
+    std::vector<BuildPrimitive> prims = {unitCube(0, {10, 0, 0}), unitCube(1, {0, 0, 0}), unitCube(2, {2, 0, 0})};
+    BvhOptions options = sahOptions(1);
+    options.method = SplitMethod::SahSweep;
+    const Bvh sound = buildBvh(prims, options);
+    REQUIRE(sound.nodes.size() == 5);
+    CHECK(bvhLayoutProblem(sound, 3).empty());
+    CHECK(bvhLayoutProblem(Bvh{}, 0).empty());
+
+    // Every split method on a soup of 2,000 triangles.
+    PrimitiveSet soup(triangleSoup(2000, 26));
+    for (SplitMethod method : {SplitMethod::Median, SplitMethod::Middle, SplitMethod::EqualCounts, SplitMethod::SahSweep, SplitMethod::SahBuckets}) {
+        BvhOptions o;
+        o.method = method;
+        std::vector<BuildPrimitive> all;
+        for (uint32_t i = 0; i < soup.size(); ++i) all.push_back(BuildPrimitive{soup.bounds(i), soup.bounds(i).centre(), i});
+        CHECK(bvhLayoutProblem(buildBvh(all, o), soup.size()).empty());
+    }
+
+    auto problem = [&](auto breakIt) {
+        Bvh bvh = sound;
+        breakIt(bvh);
+        return bvhLayoutProblem(bvh, 3);
+    };
+    // A second child that points back up: the cycle a reference kept across push_back makes.
+    CHECK(problem([](Bvh& b) { b.nodes[0].offset = 0; }).find("node 0's second child is node 0") != std::string::npos);
+    CHECK(problem([](Bvh& b) { b.nodes[1].offset = 1; }).find("node 1's second child is node 1") != std::string::npos);
+    CHECK(problem([](Bvh& b) { b.nodes[0].offset = 9; }).find("inside the 5 nodes") != std::string::npos);
+    // Node 4 reached as node 1's second child and as the root's.
+    CHECK(problem([](Bvh& b) { b.nodes[1].offset = 4; }).find("node 4 is reached twice") != std::string::npos);
+    // The last node interior: its first child would be past the array.
+    CHECK(problem([](Bvh& b) { b.nodes[4].primCount = 0; }).find("node 4 is interior") != std::string::npos);
+    CHECK(problem([](Bvh& b) { b.nodes[2].offset = 3; }).find("node 2: its leaf range [3, 4) runs past primIndices (3 entries)") != std::string::npos);
+    CHECK(problem([](Bvh& b) { b.primIndices[1] = 7; }).find("primIndices[1] = 7 is not a primitive (there are 3)") != std::string::npos);
 }

@@ -107,3 +107,19 @@ TEST_CASE("worker conversation: a forbidden call may come before the phase start
     CHECK(events[0].record == RecordKind::Forbidden);
     CHECK_FALSE(c.malformed());
 }
+
+TEST_CASE("worker conversation: a phase not run is a verdict, its reason cut like any text") {
+    std::vector<uint8_t> bytes;
+    append(bytes, RecordKind::PhaseStart, 0);
+    append(bytes, RecordKind::NotRun, 0, std::vector<uint8_t>(WorkerConversation::kMaxTextPayload + 100, 'n'));
+    append(bytes, RecordKind::Done, 0);
+    WorkerConversation c({0});
+    auto events = converse(c, bytes, bytes.size());
+    REQUIRE(events.size() == 3);
+    CHECK(events[1].kind == WorkerEvent::Kind::Verdict);
+    CHECK(events[1].record == RecordKind::NotRun);
+    CHECK(events[1].payload.size() == WorkerConversation::kMaxTextPayload);
+    CHECK(events[1].droppedBytes == 100);
+    CHECK(c.done());
+    CHECK_FALSE(c.malformed());
+}

@@ -257,6 +257,10 @@ private:
             outcome.status = PhaseStatus::Failed;
             outcome.reason = text + " (in " + stub + ")";
             break;
+        case RecordKind::NotRun:
+            outcome.status = PhaseStatus::Failed;
+            outcome.reason = "not run: " + text;
+            break;
         case RecordKind::OutOfMemory:
             outcome.status = PhaseStatus::OutOfMemory;
             outcome.reason = "exceeded the memory limit of " + std::to_string(spec_.limits.memoryMiB) + " MiB in " + stub;

@@ -66,7 +66,7 @@ std::optional<WorkerEvent> WorkerConversation::accept(uint8_t kind, uint32_t pha
     }
     verdictGiven_ = true;
     size_t dropped = 0;
-    if ((record == RecordKind::NotStarted || record == RecordKind::Failed) && payload.size() > kMaxTextPayload) {
+    if ((record == RecordKind::NotStarted || record == RecordKind::Failed || record == RecordKind::NotRun) && payload.size() > kMaxTextPayload) {
         dropped = payload.size() - kMaxTextPayload;
         payload = payload.first(kMaxTextPayload);
     }

@@ -48,9 +48,10 @@ public:
     bool done() const { return done_; }
 
     static constexpr uint64_t kMaxPayload = uint64_t(1) << 30;
-    // A text record (NotStarted, Failed: a name or an exception's message) keeps at most this
-    // many bytes of its payload: the rest is read and dropped here, so no report, table or CSV
-    // downstream ever holds more of what student code says than this.
+    // A text record (NotStarted, Failed, NotRun: a name, an exception's message or why a phase
+    // was not run) keeps at most this many bytes of its payload: the rest is read and dropped
+    // here, so no report, table or CSV downstream ever holds more of what student code says
+    // than this.
     static constexpr size_t kMaxTextPayload = 512;
 
 private:

@@ -32,9 +32,10 @@ enum class RecordKind : uint8_t {
     OutOfMemory,     // std::bad_alloc
     Forbidden,       // the filter trapped a system call; payload = its number (i32)
     Done,            // every phase of the request ran
+    NotRun,          // the task would not call student code on what an earlier phase made; payload = why
 };
 inline constexpr uint8_t kFirstRecordKind = uint8_t(RecordKind::PhaseStart);
-inline constexpr uint8_t kLastRecordKind = uint8_t(RecordKind::Done);
+inline constexpr uint8_t kLastRecordKind = uint8_t(RecordKind::NotRun);
 inline constexpr size_t kRecordHeaderSize = 1 + 4 + 8;
 
 // Exit statuses the framework's part of the worker uses; anything else is the student's.

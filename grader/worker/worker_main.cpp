@@ -96,6 +96,8 @@ void runPhase(uint32_t phase, Task task, std::span<const uint8_t> input, WorkerS
         sendRecord(RecordKind::PhaseData, phase, out.bytes().data(), out.bytes().size());
     } catch (const NotImplemented& e) {
         sendText(RecordKind::NotStarted, phase, e.stub);
+    } catch (const PhaseNotRun& e) {
+        sendText(RecordKind::NotRun, phase, e.what());
     } catch (const std::bad_alloc&) {
         sendRecord(RecordKind::OutOfMemory, phase, nullptr, 0);
     } catch (const std::exception& e) {

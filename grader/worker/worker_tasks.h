@@ -12,6 +12,7 @@
 #include <any>
 #include <initializer_list>
 #include <memory>
+#include <stdexcept>
 #include <string_view>
 
 namespace rtlab::grader::worker {
@@ -39,6 +40,14 @@ inline const PrimitiveSet& builtPrimitives(const WorkerState& state) {
     if (!state.primitives) throw WireError("a query before the build");
     return *state.primitives;
 }
+
+// Thrown by a task that will not call student code on what an earlier phase made, because it
+// breaks a rule that code may rely on (a BVH whose child indices point back up would send a
+// correct traversal round a cycle): the phase fails as "not run" with this reason, which names
+// the earlier phase's result, not the stub the task would have called.
+struct PhaseNotRun : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
 
 using Task = void (*)(ByteReader& input, ByteWriter& output, WorkerState& state);
 

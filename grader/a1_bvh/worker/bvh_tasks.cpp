@@ -2,6 +2,7 @@
 // BVH that build produced (those two through the BVH's adapter, as the accelerator builds and
 // queries it).
 #include "framework/accel/bvh_adapter.h"
+#include "framework/accel/bvh_layout.h"
 #include "framework/interface/a1_bvh.h"
 #include "framework/interface/a2_sah.h"
 #include "grader/wire/scene_codec.h"
@@ -63,8 +64,16 @@ void answerBvhQueries(const Bvh& bvh, const PrimitiveSet& primitives, ByteReader
         }));
 }
 
+// The tree the build phase made, once it is known to keep the layout a traversal relies on.
+const Bvh& builtBvh(const WorkerState& state) {
+    const Bvh& bvh = builtStructure<Bvh>(state);
+    if (std::string problem = bvhLayoutProblem(bvh, state.primitives->size()); !problem.empty())
+        throw PhaseNotRun("the tree the build made breaks the BVH layout (framework/interface/bvh.h): " + problem);
+    return bvh;
+}
+
 void runBvhQuery(ByteReader& input, ByteWriter& output, WorkerState& state) {
-    answerBvhQueries(builtStructure<Bvh>(state), *state.primitives, input, output);
+    answerBvhQueries(builtBvh(state), *state.primitives, input, output);
 }
 
 // The traversal on a BVH the grader built (given_structure.h), not the one the build made.
@@ -76,7 +85,7 @@ void runBvhGivenQuery(ByteReader& input, ByteWriter& output, WorkerState& state)
 // The ordered traversal again, listing the primitives it tests in order: the visit-order test
 // judges which leaf comes first and whether a leaf is entered beyond the closest hit so far.
 void runBvhVisits(ByteReader& input, ByteWriter& output, WorkerState& state) {
-    const Bvh& bvh = builtStructure<Bvh>(state);
+    const Bvh& bvh = builtBvh(state);
     writeListsPerRay(
         *state.primitives, input.getVector<Ray>(kMaxPrimitives), kMaxListedTests, output,
         [](Traversal& t, std::vector<uint32_t>* list) { t.listTestsIn(list); }, [&](Traversal& t, Hit& hit) { BvhAdapter::intersect(bvh, t, hit); });
